@@ -1,0 +1,86 @@
+#ifndef fluid_surface_output_writer_h
+#define fluid_surface_output_writer_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <fluid_surface/surface_geometry.h>
+
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace FluidSurface
+{
+  /**
+   * Files of a run in the output directory: `solution-NNNNN.vtu` with curved
+   * cells plus the `solution.pvd` time series for ParaView, and the directory
+   * itself (created; a directory holding another run's results is not
+   * overwritten unless asked to).
+   */
+  class OutputWriter
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * Creates the output directory. Throws an InputError if it holds the
+     * results of another run (a `statistics` file) and overwriting is off,
+     * unless @p resuming.
+     */
+    void
+    prepare_directory(const MPI_Comm communicator, const bool resuming) const;
+
+    /// The output directory, with a trailing '/'.
+    std::string
+    directory() const;
+
+    /// Whether a VTU file is due at @p time (always at the first and the last step).
+    bool
+    due(const double time) const;
+
+    /**
+     * Writes the geometry fields (H, ν) and whatever @p add_fields attaches
+     * to the DataOut, as solution-NNNNN.vtu, and records it in solution.pvd.
+     */
+    void
+    write(const SurfaceGeometry                             &geometry,
+          const double                                       time,
+          const std::function<void(dealii::DataOut<2, 3> &)> &add_fields = {});
+
+    /// Number of VTU files written so far (the NNNNN of the next one).
+    unsigned int
+    n_written() const
+    {
+      return times_and_names.size();
+    }
+
+    /// Restores the pvd record after a restart.
+    void
+    set_record(const std::vector<std::pair<double, std::string>> &record)
+    {
+      times_and_names = record;
+    }
+    const std::vector<std::pair<double, std::string>> &
+    record() const
+    {
+      return times_and_names;
+    }
+
+  private:
+    std::string  output_directory = "results";
+    double       output_interval  = 0;
+    unsigned int subdivisions     = 2;
+    bool         overwrite        = false;
+    bool         write_vtu        = true;
+
+    double                                      last_output_time = -1e300;
+    std::vector<std::pair<double, std::string>> times_and_names;
+  };
+} // namespace FluidSurface
+
+#endif

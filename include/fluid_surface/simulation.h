@@ -1,0 +1,59 @@
+#ifndef fluid_surface_simulation_h
+#define fluid_surface_simulation_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <fluid_surface/output_writer.h>
+#include <fluid_surface/statistics_file.h>
+#include <fluid_surface/surface_geometry.h>
+
+#include <string>
+
+namespace FluidSurface
+{
+  /**
+   * One run of the program: parameters → scene → geometry and fields → steps
+   * → diagnostics → files. The scene (`subsection model`) decides which
+   * components are assembled at all.
+   */
+  class Simulation
+  {
+  public:
+    /// What a run computes.
+    enum class Scene
+    {
+      geometry ///< builds and measures the surface only (no time steps)
+    };
+
+    explicit Simulation(const MPI_Comm communicator);
+
+    /// Declares every parameter of every component.
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /// Reads and checks the parameters of every component (InputError on bad input).
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Runs the scene; writes into the output directory. @p prm is echoed as used_parameters.prm.
+    void
+    run(const dealii::ParameterHandler &prm);
+
+  private:
+    void
+    record_geometry_statistics(const unsigned int step, const double time);
+
+    MPI_Comm                   communicator;
+    dealii::ConditionalOStream pcout;
+    dealii::Timer              wall_timer;
+
+    Scene           scene = Scene::geometry;
+    SurfaceGeometry geometry;
+    OutputWriter    output;
+    StatisticsFile  statistics;
+  };
+} // namespace FluidSurface
+
+#endif

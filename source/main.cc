@@ -1,0 +1,84 @@
+// fluid_surface: fluid deformable surfaces (surface Navier–Stokes + Helfrich bending) with deal.II.
+#include <deal.II/base/mpi.h>
+
+#include <fluid_surface/parameter_file.h>
+#include <fluid_surface/simulation.h>
+
+#include <iostream>
+#include <string>
+
+namespace
+{
+  const char *usage = R"(Usage:
+  fluid_surface FILE.prm                 run the experiment described by FILE.prm
+  fluid_surface --validate FILE.prm      read and check FILE.prm, compute nothing
+  fluid_surface --equilibrium FILE.prm   compute a rotating axisymmetric equilibrium shape
+  fluid_surface --print-parameters       print every parameter with default, pattern and help
+  fluid_surface --help                   this text
+
+Runs in parallel with mpirun -np N. Results go to the `output directory` of FILE.prm.
+Exit status: 0 success, 1 a computation failed, 2 bad input (the message names file and entry).
+)";
+
+  void
+  error_message(const std::string &message)
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cerr << "fluid_surface: error: " << message << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  using namespace FluidSurface;
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
+
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  try
+    {
+      if (args.empty() || args[0] == "--help" || args[0] == "-h")
+        {
+          if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            std::cout << usage;
+          return args.empty() ? 2 : 0;
+        }
+      dealii::ParameterHandler prm;
+      Simulation::declare_parameters(prm);
+      if (args[0] == "--print-parameters")
+        {
+          if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+          return 0;
+        }
+      const bool        validate_only = (args[0] == "--validate");
+      const std::string file          = (validate_only && args.size() > 1) ? args[1] : args[0];
+      if ((validate_only && args.size() != 2) || (!validate_only && args.size() != 1) ||
+          (!validate_only && file.rfind("--", 0) == 0))
+        {
+          error_message("unexpected arguments; see fluid_surface --help");
+          return 2;
+        }
+      parse_parameter_file(prm, file);
+      Simulation simulation(MPI_COMM_WORLD);
+      simulation.parse_parameters(prm);
+      if (validate_only)
+        {
+          if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            std::cout << file << ": valid" << std::endl;
+          return 0;
+        }
+      simulation.run(prm);
+    }
+  catch (const InputError &exc)
+    {
+      error_message(exc.what());
+      return 2;
+    }
+  catch (const std::exception &exc)
+    {
+      error_message(exc.what());
+      return 1;
+    }
+  return 0;
+}
