@@ -48,7 +48,7 @@ main(int argc, char **argv)
       if (args[0] == "--print-parameters")
         {
           if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-            prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+            print_documented_parameters(prm, std::cout);
           return 0;
         }
       const bool        validate_only = (args[0] == "--validate");

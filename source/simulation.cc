@@ -78,8 +78,7 @@ namespace FluidSurface
     pcout << "-- fluid_surface: " << geometry.description() << '\n'
           << "   " << geometry.triangulation().n_global_active_cells() << " cells, "
           << geometry.dof_handler().n_dofs() << " position DoFs, "
-          << Utilities::MPI::n_mpi_processes(communicator) << " MPI rank(s), "
-          << MultithreadInfo::n_threads() << " thread(s)" << std::endl;
+          << Utilities::MPI::n_mpi_processes(communicator) << " MPI rank(s)" << std::endl;
 
     statistics.open(output.directory() + "statistics", Utilities::MPI::this_mpi_process(communicator));
     record_geometry_statistics(0, 0.0);

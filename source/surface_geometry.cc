@@ -18,6 +18,7 @@
 #include <fluid_surface/surface_geometry.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -109,7 +110,7 @@ namespace FluidSurface
     else
       {
         if (shape == Shape::mesh_file)
-          out << "mesh " << mesh_file << (project_onto_ellipsoid ? " projected onto " : "");
+          out << "mesh " << std::filesystem::path(mesh_file).filename().string() << (project_onto_ellipsoid ? " projected onto " : "");
         if (shape == Shape::ellipsoid || project_onto_ellipsoid)
           out << "ellipsoid [" << semi_axes[0] << ", " << semi_axes[1] << ", " << semi_axes[2] << "]";
       }

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <ostream>
 #include <stdexcept>
 #include <string>
 
@@ -35,6 +36,13 @@ namespace FluidSurface
   throw_invalid_entry(const std::string &entry_path,
                       const std::string &value,
                       const std::string &expected);
+
+  /**
+   * Prints every parameter as a valid parameter file: for each entry its help
+   * text, its pattern and its default value (fluid_surface --print-parameters).
+   */
+  void
+  print_documented_parameters(const dealii::ParameterHandler &prm, std::ostream &out);
 
   /**
    * The name of the parameter file that was read, for messages ("" before).

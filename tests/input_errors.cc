@@ -1,0 +1,74 @@
+// Bad input ends a run before any computation with one message that names the file, the
+// line or entry, and what was expected: missing file, unknown subsection, unknown entry, a value
+// failing its pattern, a non-positive semi-axis, meshes with triangles or a boundary, and an
+// output directory that holds another run.
+#include <deal.II/base/mpi.h>
+
+#include <fluid_surface/parameter_file.h>
+#include <fluid_surface/simulation.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+using namespace FluidSurface;
+
+namespace
+{
+  void
+  try_file(const std::string &name, const std::string &content, const bool run = false)
+  {
+    if (!content.empty())
+      std::ofstream(name) << content;
+    dealii::ParameterHandler prm;
+    Simulation::declare_parameters(prm);
+    try
+      {
+        parse_parameter_file(prm, name);
+        Simulation simulation(MPI_COMM_WORLD);
+        simulation.parse_parameters(prm);
+        if (run)
+          simulation.run(prm);
+        std::cout << name << ": accepted" << std::endl;
+      }
+    catch (const InputError &error)
+      {
+        std::cout << error.what() << std::endl;
+      }
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  try_file("missing.prm", "");
+  try_file("unknown_subsection.prm", "subsection geometri\n  set refinement = 2\nend\n");
+  try_file("unknown_entry.prm", "subsection geometry\n  set refinment = 2\nend\n");
+  try_file("bad_pattern.prm", "subsection geometry\n  set position degree = 4\nend\n");
+  try_file("bad_axes.prm", "subsection geometry\n  set semi-axes = 1, -1, 2\nend\n");
+  try_file("missing_mesh.prm", "subsection geometry\n  set shape = mesh file\n  set mesh file = nowhere.msh\nend\n");
+
+  // A mesh with a triangle, and an open surface (one quadrilateral).
+  std::ofstream("triangles.msh") << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n"
+                                    "3 1 1 0\n4 0 1 1\n$EndNodes\n$Elements\n2\n1 3 2 0 1 1 2 3 4\n"
+                                    "2 2 2 0 1 1 3 4\n$EndElements\n";
+  std::ofstream("open.msh") << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n"
+                               "3 1 1 0\n4 0 1 0\n$EndNodes\n$Elements\n1\n1 3 2 0 1 1 2 3 4\n$EndElements\n";
+  const std::string mesh_prm = "subsection geometry\n  set shape = mesh file\n  set refinement = 0\n"
+                               "  set project onto ellipsoid = false\n  set mesh file = ";
+  const std::string out_prm  = "subsection output\n  set output directory = results_errors\n"
+                               "  set write vtu = false\nend\n";
+  try_file("triangles.prm", mesh_prm + "triangles.msh\nend\n" + out_prm, true);
+  try_file("open.prm", mesh_prm + "open.msh\nend\n" + out_prm, true);
+
+  // A second run into the directory of the first one is refused.
+  std::filesystem::remove_all("results_reuse");
+  const std::string reuse = "subsection geometry\n  set refinement = 1\nend\n"
+                            "subsection output\n  set output directory = results_reuse\n  set write vtu = false\nend\n";
+  std::ofstream("first.prm") << reuse;
+  std::cout.setstate(std::ios::failbit); // the first run's screen output is not part of this test
+  try_file("first.prm", "", true);
+  std::cout.clear();
+  try_file("second.prm", reuse, true);
+}
