@@ -49,6 +49,10 @@ namespace FluidSurface
                       "2",
                       Patterns::Integer(1, 8),
                       "Each cell is written as n×n curved sub-cells (n = subdivisions).");
+    prm.declare_entry("screen interval",
+                      "10",
+                      Patterns::Integer(1),
+                      "Report a step on the screen every N steps (and the last one).");
     prm.declare_entry("overwrite",
                       "false",
                       Patterns::Bool(),
@@ -69,6 +73,7 @@ namespace FluidSurface
     write_vtu       = prm.get_bool("write vtu");
     subdivisions    = prm.get_integer("subdivisions");
     overwrite       = prm.get_bool("overwrite");
+    screen_every    = prm.get_integer("screen interval");
     prm.leave_subsection();
   }
 

@@ -5,6 +5,7 @@
 #include <fluid_surface/simulation.h>
 
 #include <fstream>
+#include <sstream>
 #include <iomanip>
 
 namespace FluidSurface
@@ -15,6 +16,7 @@ namespace FluidSurface
     : communicator(communicator)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
     , geometry(communicator)
+    , model(geometry)
   {}
 
   void
@@ -23,22 +25,41 @@ namespace FluidSurface
     prm.enter_subsection("model");
     prm.declare_entry("scene",
                       "geometry",
-                      Patterns::Selection("geometry"),
+                      Patterns::Selection("geometry|full"),
                       "What the run computes. geometry: build the surface, measure it (area, volume, "
-                      "reduced volume, Willmore energy ½∫H²) and write it; no time steps.");
+                      "reduced volume, Willmore energy ½∫H²) and write it; no time steps. full: the fluid "
+                      "deformable surface (surface Navier–Stokes, bending, volume constraint, mesh "
+                      "redistribution) on the moving surface.");
+    prm.leave_subsection();
+    prm.enter_subsection("flow");
+    prm.declare_entry("Re",
+                      "1",
+                      Patterns::Double(0, Patterns::Double::max_double_value),
+                      "Reynolds number Re = ρUL/η; the viscous term is (2/Re)(σ(u), σ(v)).");
+    prm.declare_entry("inertia", "true", Patterns::Bool(), "Assemble ∂_t u (false: the Stokes limit).");
+    prm.declare_entry("convection", "true", Patterns::Bool(), "Assemble the convection ∇_w u, w = u − ∂_t X.");
     prm.leave_subsection();
     SurfaceGeometry::declare_parameters(prm);
     OutputWriter::declare_parameters(prm);
+    TimeStepper::declare_parameters(prm);
+    FluidDeformableSurface::declare_parameters(prm);
+    Diagnostics::declare_parameters(prm);
   }
 
   void
   Simulation::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("model");
-    scene = Scene::geometry;
+    scene = (prm.get("scene") == "full" ? Scene::full : Scene::geometry);
     prm.leave_subsection();
     geometry.parse_parameters(prm);
     output.parse_parameters(prm);
+    if (scene == Scene::full)
+      {
+        time.parse_parameters(prm);
+        model.parse_parameters(prm);
+        diagnostics.parse_parameters(prm);
+      }
   }
 
   void
@@ -81,7 +102,112 @@ namespace FluidSurface
           << Utilities::MPI::n_mpi_processes(communicator) << " MPI rank(s)" << std::endl;
 
     statistics.open(output.directory() + "statistics", Utilities::MPI::this_mpi_process(communicator));
-    record_geometry_statistics(0, 0.0);
-    output.write(geometry, 0.0);
+    if (scene == Scene::geometry)
+      {
+        record_geometry_statistics(0, 0.0);
+        output.write(geometry, 0.0);
+      }
+    else
+      run_full_model();
+  }
+
+  void
+  Simulation::record_full_model_step(const double                              tau,
+                                     const double                              willmore,
+                                     const FluidDeformableSurface::StepResult &step)
+  {
+    const Diagnostics::Values v = diagnostics.evaluate(geometry, model.dof_handler(), model.solution());
+    diagnostics.record(v, time.time(), tau);
+    const double bending_energy = model.bending_energy(willmore);
+    total_energy                = v.kinetic_energy + bending_energy;
+
+    statistics.add_value("time step", time.step_number());
+    statistics.add_value("time", time.time());
+    statistics.add_value("tau", tau);
+    statistics.add_value("kinetic energy", v.kinetic_energy);
+    statistics.add_value("bending energy", bending_energy);
+    statistics.add_value("total energy", total_energy);
+    statistics.add_value("dissipation rate", step.dissipation_rate);
+    diagnostics.add_to_statistics(v, statistics);
+    statistics.add_value("volume multiplier", step.gamma);
+    statistics.add_value("linear iterations", step.linear_iterations);
+    statistics.add_value("wall time", wall_timer.wall_time());
+    statistics.end_row();
+
+    if (time.step_number() % output.screen_interval() == 0 || !time.before_end())
+      {
+        const double elapsed = wall_timer.wall_time();
+        const double per_step = time.step_number() > 0 ? elapsed / time.step_number() : 0.0;
+        const double eta =
+          time.time() > 0 ? elapsed * (time.final_time() - time.time()) / time.time() : 0.0;
+        pcout << "*** Step " << time.step_number() << "  t = " << std::setprecision(5) << time.time()
+              << "  τ = " << std::setprecision(3) << tau << "  (" << time.n_rejected_steps() << " rejected so far)\n"
+              << std::setprecision(8) << "    F = " << total_energy << " (kin " << v.kinetic_energy << ", bend "
+              << bending_energy << ")  ω = " << std::setprecision(5) << v.angular_velocity << '\n'
+              << std::setprecision(2) << std::scientific << "    ΔA/A = " << diagnostics.max_area_drift()
+              << "  ΔV/V = " << diagnostics.max_volume_drift()
+              << "  ΔL/L = " << diagnostics.max_angular_momentum_drift() << "  e(λ) = " << v.symmetry_deviation
+              << "  mesh quality " << std::fixed << v.mesh_quality << '\n'
+              << "    " << per_step << " s/step, ETA " << static_cast<long>(eta) << " s" << std::defaultfloat
+              << std::endl;
+      }
+  }
+
+  void
+  Simulation::run_full_model()
+  {
+    model.setup();
+    pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ" << std::endl;
+    double willmore = geometry.compute_curvature();
+    record_full_model_step(0.0, willmore, FluidDeformableSurface::StepResult());
+    output.write(geometry, time.time(), [&](DataOut<2, 3> &data_out) { model.add_output_fields(data_out); });
+
+    while (time.before_end())
+      {
+        const double                             tau  = time.step_size();
+        const FluidDeformableSurface::StepResult step = model.advance(tau);
+        if (!step.solved)
+          {
+            model.restore_last_state();
+            time.reject(step.failure);
+            continue;
+          }
+        const double new_willmore = geometry.compute_curvature();
+        const double new_energy =
+          model.kinetic_energy(model.candidate_solution()) + model.bending_energy(new_willmore);
+        if (!time.energy_acceptable(total_energy, new_energy))
+          {
+            model.restore_last_state();
+            std::ostringstream reason;
+            reason << "energy " << std::setprecision(10) << total_energy << " → " << new_energy;
+            time.reject(reason.str());
+            continue;
+          }
+        model.accept();
+        time.accept(tau);
+        willmore = new_willmore;
+        record_full_model_step(tau, willmore, step);
+        const double quality = geometry.measure().mesh_quality;
+        if (quality < model.mesh_quality_floor())
+          {
+            std::ostringstream msg;
+            msg << "mesh quality " << quality << " fell below the 'mesh quality floor' "
+                << model.mesh_quality_floor() << " at t = " << time.time()
+                << "; the output up to the previous step is intact";
+            throw std::runtime_error(msg.str());
+          }
+        if (output.due(time.time()) || !time.before_end())
+          output.write(geometry, time.time(), [&](DataOut<2, 3> &data_out) { model.add_output_fields(data_out); });
+      }
+
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::ofstream summary(output.directory() + "summary");
+        diagnostics.write_summary(summary, total_energy, time.step_number(), time.n_rejected_steps(),
+                                  wall_timer.wall_time());
+        pcout << "--- summary\n";
+        diagnostics.write_summary(std::cout, total_energy, time.step_number(), time.n_rejected_steps(),
+                                  wall_timer.wall_time());
+      }
   }
 } // namespace FluidSurface

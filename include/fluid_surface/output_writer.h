@@ -52,6 +52,13 @@ namespace FluidSurface
           const double                                       time,
           const std::function<void(dealii::DataOut<2, 3> &)> &add_fields = {});
 
+    /// Every how many steps a report goes to the screen.
+    unsigned int
+    screen_interval() const
+    {
+      return screen_every;
+    }
+
     /// Number of VTU files written so far (the NNNNN of the next one).
     unsigned int
     n_written() const
@@ -77,6 +84,7 @@ namespace FluidSurface
     unsigned int subdivisions     = 2;
     bool         overwrite        = false;
     bool         write_vtu        = true;
+    unsigned int screen_every     = 10;
 
     double                                      last_output_time = -1e300;
     std::vector<std::pair<double, std::string>> times_and_names;

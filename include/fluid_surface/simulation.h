@@ -5,7 +5,10 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <fluid_surface/diagnostics.h>
+#include <fluid_surface/fluid_deformable_surface.h>
 #include <fluid_surface/output_writer.h>
+#include <fluid_surface/time_stepper.h>
 #include <fluid_surface/statistics_file.h>
 #include <fluid_surface/surface_geometry.h>
 
@@ -24,7 +27,8 @@ namespace FluidSurface
     /// What a run computes.
     enum class Scene
     {
-      geometry ///< builds and measures the surface only (no time steps)
+      geometry, ///< builds and measures the surface only (no time steps)
+      full      ///< the fluid deformable surface of the seed paper
     };
 
     explicit Simulation(const MPI_Comm communicator);
@@ -44,6 +48,11 @@ namespace FluidSurface
   private:
     void
     record_geometry_statistics(const unsigned int step, const double time);
+    void
+    run_full_model();
+    /// One statistics row and screen report of the full model's accepted state.
+    void
+    record_full_model_step(const double tau, const double willmore, const FluidDeformableSurface::StepResult &step);
 
     MPI_Comm                   communicator;
     dealii::ConditionalOStream pcout;
@@ -53,6 +62,11 @@ namespace FluidSurface
     SurfaceGeometry geometry;
     OutputWriter    output;
     StatisticsFile  statistics;
+
+    TimeStepper            time;
+    FluidDeformableSurface model;
+    Diagnostics            diagnostics;
+    double                 total_energy = 0;
   };
 } // namespace FluidSurface
 

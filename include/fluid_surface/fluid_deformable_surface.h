@@ -1,0 +1,246 @@
+#ifndef fluid_surface_fluid_deformable_surface_h
+#define fluid_surface_fluid_deformable_surface_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <fluid_surface/surface_geometry.h>
+
+#include <memory>
+#include <random>
+#include <string>
+
+namespace FluidSurface
+{
+  /**
+   * Helfrich bending force b = (1/Be)(−Δ_S H − H(|B|² − ½H²)) ν, discretized
+   * with the bending scalar y: (y, φ) − (∇_S κ, ∇_S φ) + (c κ, φ) = 0 with the
+   * lagged coefficient c = |B^m|² − ½(H^m)² (B^m = −P∇ñ^m), and the force
+   * (1/Be)(y ñ, v) in the momentum equation. κ is the new surface's mean
+   * curvature from MeshRedistribution.
+   */
+  class BendingForce
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    bool   enabled        = true;
+    double bending_number = 1.0; ///< Be = ρU²L²/κ_b; F_bend = (1/2Be)∫H²
+  };
+
+  /**
+   * Global multiplier γ for the enclosed volume: the force −γν and the
+   * constraint (u·ñ, 1) = −(V(S^m) − V₀)/τ, whose right-hand side also removes
+   * any volume drift of earlier steps.
+   */
+  class VolumeConstraint
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    bool enabled = true;
+  };
+
+  /**
+   * BGN-type tangential mesh redistribution: the new position Y follows the
+   * normal velocity, (Y·ñ, φ)_h = (X^m·ñ, φ)_h + τ(u·ñ, φ)_h, and its
+   * tangential motion keeps the mesh regular through (κñ, η)_h + (∇_S Y, ∇_S η) = 0,
+   * i.e. κñ = Δ_S Y (κ = H of the new surface). (·,·)_h is the nodal
+   * (Gauss–Lobatto) quadrature when lumping is on, as in Barrett–Garcke–Nürnberg.
+   */
+  class MeshRedistribution
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    bool   lumped            = true;
+    double mesh_quality_floor = 0.05; ///< a run stops when the mesh quality falls below this
+  };
+
+  /**
+   * Material parameters of the in-plane viscous flow: Reynolds number and
+   * which inertial terms are assembled.
+   */
+  struct FlowCoefficients
+  {
+    double reynolds_number = 1.0; ///< Re = ρUL/η
+    bool   inertia         = true; ///< ∂_t u (the Stokes limit drops it)
+    bool   convection      = true; ///< ∇_w u with w = u − ∂_t X
+  };
+
+  /**
+   * The fluid deformable surface (seed eqs. 1–4): the full 3D velocity u ∈ [Q2]³,
+   * surface pressure p ∈ Q1, curvature κ and bending scalar y ∈ Q_k, the new
+   * position Y ∈ [Q_k]³ and the volume multiplier γ, solved as one linear
+   * system per step on the frozen surface S^m (all nonlinear coefficients
+   * lagged), so that the chain u → Y → κ → y → bending force is implicit.
+   */
+  class FluidDeformableSurface
+  {
+  public:
+    /// Result of one step attempt.
+    struct StepResult
+    {
+      bool         solved = false;
+      std::string  failure;
+      unsigned int linear_iterations = 0;
+      double       gamma             = 0;
+      double       dissipation_rate  = 0; ///< (2/Re)‖σ(u)‖² on S^m
+    };
+
+    FluidDeformableSurface(SurfaceGeometry &geometry);
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Distributes DoFs, sets the initial velocity and remembers V₀ and A₀.
+    void
+    setup();
+
+    /**
+     * Assembles and solves one step of size @p tau on the current surface and
+     * moves the geometry to the new surface. The old state is kept until
+     * accept() or restore_last_state().
+     */
+    StepResult
+    advance(const double tau);
+
+    /// Makes the last advance() the current state.
+    void
+    accept();
+
+    /// Undoes the last advance() (geometry and fields).
+    void
+    restore_last_state();
+
+    /// ½∫|u|² of @p state (default: the current one) on the current surface.
+    double
+    kinetic_energy(const VectorType &state) const;
+    double
+    kinetic_energy() const
+    {
+      return kinetic_energy(current);
+    }
+    /// The result of the last advance(), before accept().
+    const VectorType &
+    candidate_solution() const
+    {
+      return candidate;
+    }
+
+    /// (1/2Be)∫|κ|² with κ the weak curvature of the current surface (needs geometry.compute_curvature()).
+    double
+    bending_energy(const double willmore_energy) const
+    {
+      return bending.enabled ? willmore_energy / bending.bending_number : 0.0;
+    }
+
+    const dealii::DoFHandler<2, 3> &
+    dof_handler() const
+    {
+      return dofs;
+    }
+    /// u, p, κ, y, Y of the current state, ghosted.
+    const VectorType &
+    solution() const
+    {
+      return current;
+    }
+    double
+    mesh_quality_floor() const
+    {
+      return redistribution.mesh_quality_floor;
+    }
+
+    /// Adds u, |u| and p to a DataOut.
+    void
+    add_output_fields(dealii::DataOut<2, 3> &data_out) const;
+
+    /// Velocity at the quadrature points of a geometry FEValues' cell.
+    static constexpr unsigned int velocity_component = 0;
+    static constexpr unsigned int pressure_component = 3;
+    static constexpr unsigned int curvature_component = 4;
+    static constexpr unsigned int bending_component   = 5;
+    static constexpr unsigned int position_component  = 6;
+
+    /// Serialization of the fields a restart needs (u, previous position).
+    const VectorType &
+    previous_position() const
+    {
+      return old_position;
+    }
+
+  private:
+    void
+    setup_dofs();
+    void
+    set_initial_velocity();
+    void
+    assemble(const double tau);
+    /// Y of @p flow_solution → the geometry's position field.
+    void
+    copy_new_position_to_geometry(const VectorType &flow_solution);
+    /// The geometry's position X → the Y components of @p flow_vector (owned).
+    void
+    copy_position_into(VectorType &flow_vector) const;
+    /// (2/Re)‖σ(u)‖² of @p state on the current surface.
+    double
+    dissipation_rate(const VectorType &state) const;
+
+    SurfaceGeometry &geometry;
+
+    FlowCoefficients   flow;
+    BendingForce       bending;
+    VolumeConstraint   volume_constraint;
+    MeshRedistribution redistribution;
+
+    // Initial velocity: rigid rotation ω e × (x − c) plus seeded noise.
+    double               initial_angular_velocity = 0;
+    dealii::Tensor<1, 3> rotation_axis;
+    dealii::Point<3>     rotation_centre;
+    double               velocity_noise   = 0;
+    double               shape_noise      = 0;
+    unsigned int         random_seed      = 1;
+
+    std::unique_ptr<dealii::FESystem<2, 3>> fe;
+    dealii::DoFHandler<2, 3>               dofs;
+    dealii::IndexSet                       owned, relevant;
+    dealii::AffineConstraints<double>      constraints;
+
+    dealii::TrilinosWrappers::SparseMatrix system_matrix;
+    VectorType                             system_rhs;       ///< owned
+    VectorType                             volume_column;    ///< (ñ, v): γ's column and the volume row
+    VectorType                             current;          ///< ghosted state u^m, …
+    VectorType                             candidate;        ///< ghosted result of the last advance()
+    VectorType                             old_position;     ///< X^{m−1}, geometry numbering, ghosted
+    VectorType                             current_position; ///< X^m, geometry numbering, ghosted
+    /// (flow DoF of Y_d, geometry DoF of X_d) for the locally owned nodes.
+    std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>> position_pairs;
+    double                                 last_tau = 0;     ///< τ of the step that produced X^m
+    double                                 last_step_tau = 0; ///< τ of the last advance()
+    std::string                            direct_solver = "Amesos_Mumps";
+    double                                 target_volume = 0;
+    double                                 target_area   = 0;
+    bool                                   area_correction = true;
+  };
+} // namespace FluidSurface
+
+#endif

@@ -1,0 +1,107 @@
+#ifndef fluid_surface_time_stepper_h
+#define fluid_surface_time_stepper_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace FluidSurface
+{
+  /**
+   * Time and step size τ of a run, with the energy-based step control: a step
+   * whose total energy F rises by more than the tolerance, or whose solve
+   * fails, is rejected and retried with τ·shrink; after a number of easy
+   * steps τ grows by a factor up to τ_max.
+   */
+  class TimeStepper
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    double
+    time() const
+    {
+      return current_time;
+    }
+    /// τ for the next attempt (never past the end time).
+    double
+    step_size() const;
+    unsigned int
+    step_number() const
+    {
+      return n_accepted;
+    }
+    unsigned int
+    n_rejected_steps() const
+    {
+      return n_rejected;
+    }
+    bool
+    before_end() const
+    {
+      return current_time < end_time * (1 - 1e-12);
+    }
+    double
+    final_time() const
+    {
+      return end_time;
+    }
+
+    /// Whether an energy change from @p old_energy to @p new_energy is acceptable.
+    bool
+    energy_acceptable(const double old_energy, const double new_energy) const;
+
+    /// Advances time by the τ just used; grows τ after enough easy steps.
+    void
+    accept(const double tau_used);
+
+    /// Shrinks τ; throws std::runtime_error with @p reason when τ falls below τ_min.
+    void
+    reject(const std::string &reason);
+
+    /// The state a checkpoint needs to continue bit for bit.
+    struct State
+    {
+      double       time;
+      double       tau;
+      unsigned int n_accepted;
+      unsigned int n_rejected;
+      unsigned int n_easy;
+    };
+    State
+    state() const
+    {
+      return {current_time, tau, n_accepted, n_rejected, n_easy};
+    }
+    void
+    set_state(const State &s)
+    {
+      current_time = s.time;
+      tau          = s.tau;
+      n_accepted   = s.n_accepted;
+      n_rejected   = s.n_rejected;
+      n_easy       = s.n_easy;
+    }
+
+  private:
+    double       end_time         = 1;
+    double       tau              = 1e-2;
+    double       tau_min          = 1e-7;
+    double       tau_max          = 1e-1;
+    double       growth           = 1.25;
+    double       shrink           = 0.5;
+    unsigned int easy_steps       = 5;
+    double       energy_tolerance = 1e-10;
+    bool         adaptive         = true;
+
+    double       current_time = 0;
+    unsigned int n_accepted   = 0;
+    unsigned int n_rejected   = 0;
+    unsigned int n_easy       = 0;
+  };
+} // namespace FluidSurface
+
+#endif

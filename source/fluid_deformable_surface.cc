@@ -1,0 +1,719 @@
+#include <deal.II/base/work_stream.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/filtered_iterator.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/numerics/data_postprocessor.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <fluid_surface/fluid_deformable_surface.h>
+#include <fluid_surface/parameter_file.h>
+#include <fluid_surface/surface_operators.h>
+
+#include <cmath>
+
+namespace FluidSurface
+{
+  using namespace dealii;
+
+  void
+  BendingForce::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("bending");
+    prm.declare_entry("enabled", "true", Patterns::Bool(), "Assemble the Helfrich bending force b.");
+    prm.declare_entry("Be",
+                      "1",
+                      Patterns::Double(0, Patterns::Double::max_double_value),
+                      "Bending capillary number Be = ρU²L²/κ_b; the bending energy is (1/2Be)∫H².");
+    prm.leave_subsection();
+  }
+
+  void
+  BendingForce::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("bending");
+    enabled        = prm.get_bool("enabled");
+    bending_number = prm.get_double("Be");
+    if (!(bending_number > 0))
+      throw_invalid_entry("bending/Be", prm.get("Be"), "a positive bending number Be");
+    prm.leave_subsection();
+  }
+
+  void
+  VolumeConstraint::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("volume constraint");
+    prm.declare_entry("enabled",
+                      "true",
+                      Patterns::Bool(),
+                      "Keep the enclosed volume V with the global multiplier γ: ∫u·ν = −(V − V₀)/τ.");
+    prm.leave_subsection();
+  }
+
+  void
+  VolumeConstraint::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("volume constraint");
+    enabled = prm.get_bool("enabled");
+    prm.leave_subsection();
+  }
+
+  void
+  MeshRedistribution::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("mesh redistribution");
+    prm.declare_entry("lumped",
+                      "true",
+                      Patterns::Bool(),
+                      "Nodal (Gauss–Lobatto) quadrature for (Y·ñ, φ) and (κñ, η), as in the BGN scheme.");
+    prm.declare_entry("mesh quality floor",
+                      "0.02",
+                      Patterns::Double(0, 1),
+                      "q_min: the run stops when min over cells of σ_min/σ_max of the Jacobian falls below.");
+    prm.leave_subsection();
+  }
+
+  void
+  MeshRedistribution::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("mesh redistribution");
+    lumped             = prm.get_bool("lumped");
+    mesh_quality_floor = prm.get_double("mesh quality floor");
+    prm.leave_subsection();
+  }
+
+  FluidDeformableSurface::FluidDeformableSurface(SurfaceGeometry &geometry)
+    : geometry(geometry)
+    , rotation_axis({0., 0., 1.})
+    , dofs(geometry.triangulation())
+  {}
+
+  void
+  FluidDeformableSurface::declare_parameters(ParameterHandler &prm)
+  {
+    BendingForce::declare_parameters(prm);
+    VolumeConstraint::declare_parameters(prm);
+    MeshRedistribution::declare_parameters(prm);
+    prm.enter_subsection("initial state");
+    prm.declare_entry("angular velocity",
+                      "0",
+                      Patterns::Double(),
+                      "ω₀ of the initial rigid rotation u₀ = ω₀ e × (x − c).");
+    prm.declare_entry("rotation axis", "0, 0, 1", Patterns::List(Patterns::Double(), 3, 3), "Axis e (normalized).");
+    prm.declare_entry("rotation centre", "0, 0, 0", Patterns::List(Patterns::Double(), 3, 3), "Centre c.");
+    prm.declare_entry("velocity perturbation",
+                      "0",
+                      Patterns::Double(0),
+                      "Amplitude ε_u of a smooth seeded random velocity field added to u₀.");
+    prm.declare_entry("shape perturbation",
+                      "0",
+                      Patterns::Double(0),
+                      "Amplitude ε_X of a smooth seeded random radial displacement of the initial shape.");
+    prm.declare_entry("random seed", "1", Patterns::Integer(0), "Seed of the perturbations (same on every rank).");
+    prm.leave_subsection();
+  }
+
+  void
+  FluidDeformableSurface::parse_parameters(ParameterHandler &prm)
+  {
+    bending.parse_parameters(prm);
+    volume_constraint.parse_parameters(prm);
+    redistribution.parse_parameters(prm);
+    prm.enter_subsection("flow");
+    flow.reynolds_number = prm.get_double("Re");
+    flow.inertia         = prm.get_bool("inertia");
+    flow.convection      = prm.get_bool("convection") && flow.inertia;
+    prm.leave_subsection();
+    prm.enter_subsection("initial state");
+    initial_angular_velocity = prm.get_double("angular velocity");
+    const auto axis          = Utilities::split_string_list(prm.get("rotation axis"));
+    const auto centre        = Utilities::split_string_list(prm.get("rotation centre"));
+    for (unsigned int d = 0; d < 3; ++d)
+      {
+        rotation_axis[d]   = Utilities::string_to_double(axis[d]);
+        rotation_centre[d] = Utilities::string_to_double(centre[d]);
+      }
+    if (rotation_axis.norm() == 0)
+      throw_invalid_entry("initial state/rotation axis", prm.get("rotation axis"), "a non-zero vector");
+    rotation_axis /= rotation_axis.norm();
+    velocity_noise = prm.get_double("velocity perturbation");
+    shape_noise    = prm.get_double("shape perturbation");
+    random_seed    = prm.get_integer("random seed");
+    prm.leave_subsection();
+    if (!flow.inertia)
+      throw_invalid_entry("flow/inertia",
+                          "false",
+                          "inertia = true in scene full (the Stokes limit of the moving surface needs the "
+                          "rigid-motion null space removed, which is not implemented yet)");
+  }
+
+  namespace
+  {
+    /// A smooth random scalar field: Σ_j a_j sin(k_j·x + c_j), seeded.
+    class SmoothRandomField
+    {
+    public:
+      SmoothRandomField(const unsigned int seed, const unsigned int offset)
+      {
+        std::mt19937                           generator(seed * 7919u + offset);
+        std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+        for (auto &mode : modes)
+          {
+            for (unsigned int d = 0; d < 3; ++d)
+              mode.wave[d] = 3.0 * uniform(generator);
+            mode.amplitude = uniform(generator) / modes.size();
+            mode.phase     = numbers::PI * uniform(generator);
+          }
+      }
+      double
+      operator()(const Point<3> &x) const
+      {
+        double value = 0;
+        for (const auto &mode : modes)
+          value += mode.amplitude * std::sin(mode.wave * x + mode.phase);
+        return value;
+      }
+
+    private:
+      struct Mode
+      {
+        Tensor<1, 3> wave;
+        double       amplitude, phase;
+      };
+      std::array<Mode, 8> modes;
+    };
+
+    /// u₀ = ω e × (x − c) + ε_u r(x) in the velocity components, 0 elsewhere.
+    class InitialVelocity : public Function<3>
+    {
+    public:
+      InitialVelocity(const unsigned int n_components,
+                      const double       omega,
+                      const Tensor<1, 3> &axis,
+                      const Point<3>     &centre,
+                      const double        noise,
+                      const unsigned int  seed)
+        : Function<3>(n_components)
+        , omega(omega)
+        , axis(axis)
+        , centre(centre)
+        , noise(noise)
+        , random{SmoothRandomField(seed, 1), SmoothRandomField(seed, 2), SmoothRandomField(seed, 3)}
+      {}
+      double
+      value(const Point<3> &x, const unsigned int component) const override
+      {
+        if (component >= 3)
+          return 0;
+        const Tensor<1, 3> u = omega * cross_product_3d(axis, x - centre);
+        return u[component] + noise * random[component](x);
+      }
+
+    private:
+      double                           omega;
+      Tensor<1, 3>                     axis;
+      Point<3>                         centre;
+      double                           noise;
+      std::array<SmoothRandomField, 3> random;
+    };
+  } // namespace
+
+  void
+  FluidDeformableSurface::setup()
+  {
+    if (shape_noise > 0)
+      {
+        const SmoothRandomField field(random_seed, 0);
+        const Point<3>          centre(geometry.measure().centre_of_mass);
+        geometry.transform_nodes([&](const Point<3> &x) {
+          const Tensor<1, 3> radial = x - centre;
+          return Point<3>(x + shape_noise * field(x) * radial / radial.norm());
+        });
+      }
+    setup_dofs();
+    set_initial_velocity();
+    const SurfaceGeometry::Measures m = geometry.measure();
+    target_volume                     = m.volume;
+    target_area                       = m.area;
+    current_position                  = geometry.position();
+    old_position                      = geometry.position();
+    last_tau                          = 0;
+    geometry.compute_curvature();
+  }
+
+  void
+  FluidDeformableSurface::setup_dofs()
+  {
+    const unsigned int k = geometry.degree();
+    fe = std::make_unique<FESystem<2, 3>>(FE_Q<2, 3>(2), 3, FE_Q<2, 3>(1), 1, FE_Q<2, 3>(k), 1, FE_Q<2, 3>(k), 1,
+                                          FE_Q<2, 3>(k), 3);
+    dofs.distribute_dofs(*fe);
+    owned = dofs.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+    constraints.clear();
+    constraints.reinit(relevant);
+    DoFTools::make_hanging_node_constraints(dofs, constraints);
+    constraints.close();
+
+    DynamicSparsityPattern dsp(relevant);
+    DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp, owned, geometry.get_communicator(), relevant);
+    system_matrix.reinit(owned, owned, dsp, geometry.get_communicator());
+    system_rhs.reinit(owned, geometry.get_communicator());
+    volume_column.reinit(owned, geometry.get_communicator());
+    current.reinit(owned, relevant, geometry.get_communicator());
+    candidate.reinit(owned, relevant, geometry.get_communicator());
+
+    // Y_d and X_d share the nodes of Q_k: pair their DoFs cell by cell.
+    position_pairs.clear();
+    const FiniteElement<2, 3>           &gfe = geometry.fe();
+    std::vector<types::global_dof_index> flow_indices(fe->n_dofs_per_cell()), geo_indices(gfe.n_dofs_per_cell());
+    std::vector<bool>                    seen(geometry.locally_owned_dofs().n_elements(), false);
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(flow_indices);
+          typename DoFHandler<2, 3>::active_cell_iterator geo_cell(&geometry.triangulation(),
+                                                                   cell->level(),
+                                                                   cell->index(),
+                                                                   &geometry.dof_handler());
+          geo_cell->get_dof_indices(geo_indices);
+          for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
+            {
+              const auto ci = fe->system_to_component_index(i);
+              if (ci.first < position_component)
+                continue;
+              for (unsigned int j = 0; j < gfe.n_dofs_per_cell(); ++j)
+                {
+                  const auto cj = gfe.system_to_component_index(j);
+                  if (cj.first + position_component == ci.first && cj.second == ci.second &&
+                      geometry.locally_owned_dofs().is_element(geo_indices[j]))
+                    {
+                      const auto local = geometry.locally_owned_dofs().index_within_set(geo_indices[j]);
+                      if (!seen[local])
+                        position_pairs.emplace_back(flow_indices[i], geo_indices[j]);
+                      seen[local] = true;
+                    }
+                }
+            }
+        }
+  }
+
+  void
+  FluidDeformableSurface::copy_new_position_to_geometry(const VectorType &flow_solution)
+  {
+    VectorType position(geometry.locally_owned_dofs(), geometry.get_communicator());
+    for (const auto &pair : position_pairs)
+      position[pair.second] = flow_solution[pair.first];
+    position.compress(VectorOperation::insert);
+    geometry.set_position(position);
+  }
+
+  void
+  FluidDeformableSurface::copy_position_into(VectorType &flow_vector) const
+  {
+    const VectorType &x = geometry.position();
+    for (const auto &pair : position_pairs)
+      flow_vector[pair.first] = x[pair.second];
+    flow_vector.compress(VectorOperation::insert);
+  }
+
+  void
+  FluidDeformableSurface::set_initial_velocity()
+  {
+    VectorType initial(owned, geometry.get_communicator());
+    VectorTools::interpolate(geometry.mapping(),
+                             dofs,
+                             InitialVelocity(fe->n_components(),
+                                             initial_angular_velocity,
+                                             rotation_axis,
+                                             rotation_centre,
+                                             velocity_noise,
+                                             random_seed),
+                             initial);
+    // Y starts at X so that the state is complete; κ, y, p are outputs of a step.
+    copy_position_into(initial);
+    constraints.distribute(initial);
+    current = initial;
+  }
+} // namespace FluidSurface
+
+namespace FluidSurface
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// Per-thread FEValues: flow and geometry elements, Gauss and nodal (Gauss–Lobatto) rules.
+    struct ScratchData
+    {
+      ScratchData(const Mapping<2, 3>       &mapping,
+                  const FiniteElement<2, 3> &flow_fe,
+                  const FiniteElement<2, 3> &geometry_fe,
+                  const Quadrature<2>       &gauss,
+                  const Quadrature<2>       &nodal)
+        : flow(mapping, flow_fe, gauss, update_values | update_gradients | update_normal_vectors | update_JxW_values)
+        , flow_nodal(mapping, flow_fe, nodal, update_values | update_gradients | update_quadrature_points |
+                                                update_JxW_values)
+        , geometry(mapping, geometry_fe, gauss, update_values | update_gradients)
+        , geometry_nodal(mapping, geometry_fe, nodal, update_values)
+      {}
+      ScratchData(const ScratchData &other)
+        : flow(other.flow.get_mapping(), other.flow.get_fe(), other.flow.get_quadrature(), other.flow.get_update_flags())
+        , flow_nodal(other.flow_nodal.get_mapping(),
+                     other.flow_nodal.get_fe(),
+                     other.flow_nodal.get_quadrature(),
+                     other.flow_nodal.get_update_flags())
+        , geometry(other.geometry.get_mapping(),
+                   other.geometry.get_fe(),
+                   other.geometry.get_quadrature(),
+                   other.geometry.get_update_flags())
+        , geometry_nodal(other.geometry_nodal.get_mapping(),
+                         other.geometry_nodal.get_fe(),
+                         other.geometry_nodal.get_quadrature(),
+                         other.geometry_nodal.get_update_flags())
+      {}
+      FEValues<2, 3> flow, flow_nodal, geometry, geometry_nodal;
+    };
+
+    struct CopyData
+    {
+      FullMatrix<double>                   matrix;
+      Vector<double>                       rhs, volume_column;
+      std::vector<types::global_dof_index> indices;
+    };
+  } // namespace
+
+  void
+  FluidDeformableSurface::assemble(const double tau)
+  {
+    system_matrix = 0;
+    system_rhs    = 0;
+    volume_column = 0;
+
+    const SurfaceGeometry::Measures m = geometry.measure();
+    // div_P u = s with s = −(A^m − A₀)/(τ A^m) returns any area drift (∫div_P u = dA/dt).
+    const double area_rate = area_correction ? -(m.area - target_area) / (tau * m.area) : 0.0;
+    const double inv_tau   = 1.0 / tau;
+    const double viscosity = 2.0 / flow.reynolds_number;
+    const double inv_be    = bending.enabled ? 1.0 / bending.bending_number : 0.0;
+    const double mesh_velocity_scale = (last_tau > 0) ? 1.0 / last_tau : 0.0;
+
+    const FEValuesExtractors::Vector velocity(velocity_component), position(position_component), vec(0);
+    const FEValuesExtractors::Scalar pressure(pressure_component), curvature(curvature_component),
+      bending_scalar(bending_component);
+    const QGauss<2>         gauss(fe->degree + 1);
+    const QGaussLobatto<2>  lobatto(geometry.degree() + 1);
+    const Quadrature<2>    &nodal = redistribution.lumped ? static_cast<const Quadrature<2> &>(lobatto) : gauss;
+    const unsigned int      n     = fe->n_dofs_per_cell();
+
+    auto worker = [&](const typename DoFHandler<2, 3>::active_cell_iterator &cell,
+                      ScratchData                                         &scratch,
+                      CopyData                                            &copy) {
+      copy.matrix.reinit(n, n);
+      copy.rhs.reinit(n);
+      copy.volume_column.reinit(n);
+      copy.indices.resize(n);
+      cell->get_dof_indices(copy.indices);
+      typename DoFHandler<2, 3>::active_cell_iterator geo_cell(&geometry.triangulation(),
+                                                               cell->level(),
+                                                               cell->index(),
+                                                               &geometry.dof_handler());
+      scratch.flow.reinit(cell);
+      scratch.geometry.reinit(geo_cell);
+      const unsigned int        nq = scratch.flow.n_quadrature_points;
+      std::vector<Tensor<1, 3>> normal(nq), u_old(nq), x_now(nq), x_before(nq);
+      std::vector<Tensor<2, 3>> normal_gradient(nq);
+      scratch.geometry[vec].get_function_values(geometry.normal_field(), normal);
+      scratch.geometry[vec].get_function_gradients(geometry.normal_field(), normal_gradient);
+      scratch.geometry[vec].get_function_values(current_position, x_now);
+      scratch.geometry[vec].get_function_values(old_position, x_before);
+      scratch.flow[velocity].get_function_values(current, u_old);
+
+      std::vector<Tensor<1, 3>> phi_u(n), phi_Y(n);
+      std::vector<Tensor<2, 3>> grad_u(n), grad_Y(n), sigma_u(n);
+      std::vector<double>       div_u(n), phi_p(n), phi_k(n), phi_y(n);
+      std::vector<Tensor<1, 3>> grad_k(n), grad_y(n);
+      for (unsigned int q = 0; q < nq; ++q)
+        {
+          const double        dA = scratch.flow.JxW(q);
+          const Tensor<1, 3> &nu = scratch.flow.normal_vector(q);
+          const Tensor<2, 3>  P  = SurfaceOperators::projection(nu);
+          // Lagged shape operator B = −P∇ñ and c = |B|² − ½H² (vanishes on spheres).
+          const Tensor<2, 3> B = -P * normal_gradient[q];
+          const double       H = trace(B);
+          const double       c = scalar_product(B, B) - 0.5 * H * H;
+          // Relative velocity w = u^m − (X^m − X^{m−1})/τ_{m−1}.
+          const Tensor<1, 3> w = u_old[q] - mesh_velocity_scale * (x_now[q] - x_before[q]);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              phi_u[i]   = scratch.flow[velocity].value(i, q);
+              grad_u[i]  = scratch.flow[velocity].gradient(i, q);
+              div_u[i]   = SurfaceOperators::surface_divergence(grad_u[i]);
+              sigma_u[i] = SurfaceOperators::strain_rate(grad_u[i], nu);
+              phi_p[i]   = scratch.flow[pressure].value(i, q);
+              phi_k[i]   = scratch.flow[curvature].value(i, q);
+              grad_k[i]  = scratch.flow[curvature].gradient(i, q);
+              phi_y[i]   = scratch.flow[bending_scalar].value(i, q);
+              grad_y[i]  = scratch.flow[bending_scalar].gradient(i, q);
+              grad_Y[i]  = scratch.flow[position].gradient(i, q);
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const unsigned int ci = fe->system_to_component_index(i).first;
+              if (ci < pressure_component)
+                {
+                  if (flow.inertia)
+                    copy.rhs(i) += inv_tau * (u_old[q] * phi_u[i]) * dA;
+                  copy.volume_column(i) += (phi_u[i] * normal[q]) * dA;
+                  for (unsigned int j = 0; j < n; ++j)
+                    {
+                      const unsigned int cj = fe->system_to_component_index(j).first;
+                      double             a  = 0;
+                      if (cj < pressure_component)
+                        {
+                          a += viscosity * scalar_product(sigma_u[i], sigma_u[j]);
+                          if (flow.inertia)
+                            a += inv_tau * (phi_u[i] * phi_u[j]);
+                          // (∇_w u, v). Its skew-symmetric form ½[(∇u w, v) − (∇v w, u)] is
+                          // inconsistent on a deforming surface (it drops ½(div_S(Pw) u, v), and
+                          // div_S(Pw) = H u·ν ≠ 0), and costs angular momentum.
+                          if (flow.convection)
+                            a += (grad_u[j] * w) * phi_u[i];
+                        }
+                      else if (cj == pressure_component)
+                        a -= phi_p[j] * div_u[i];
+                      else if (cj == bending_component)
+                        a -= inv_be * phi_y[j] * (normal[q] * phi_u[i]);
+                      copy.matrix(i, j) += a * dA;
+                    }
+                }
+              else if (ci == pressure_component)
+                {
+                  copy.rhs(i) -= area_rate * phi_p[i] * dA;
+                  for (unsigned int j = 0; j < n; ++j)
+                    if (fe->system_to_component_index(j).first < pressure_component)
+                      copy.matrix(i, j) -= phi_p[i] * div_u[j] * dA;
+                }
+              else if (ci == bending_component)
+                {
+                  // (y, φ) − (∇κ, ∇φ) + (cκ, φ) = 0.
+                  for (unsigned int j = 0; j < n; ++j)
+                    {
+                      const unsigned int cj = fe->system_to_component_index(j).first;
+                      if (cj == bending_component)
+                        copy.matrix(i, j) += phi_y[i] * phi_y[j] * dA;
+                      else if (cj == curvature_component)
+                        copy.matrix(i, j) += (-grad_k[j] * grad_y[i] + c * phi_k[j] * phi_y[i]) * dA;
+                    }
+                }
+              else if (ci >= position_component)
+                {
+                  // (∇_S Y, ∇_S η) of κñ = Δ_S Y.
+                  for (unsigned int j = 0; j < n; ++j)
+                    if (fe->system_to_component_index(j).first >= position_component)
+                      copy.matrix(i, j) += scalar_product(grad_Y[i], grad_Y[j]) * dA;
+                }
+            }
+        }
+
+      // Nodal terms: (1/τ)(Y·ñ − τu·ñ, φ)_h = (1/τ)(X^m·ñ, φ)_h in the κ rows; (κñ, η)_h in the Y rows.
+      scratch.flow_nodal.reinit(cell);
+      typename DoFHandler<2, 3>::active_cell_iterator geo_cell_nodal = geo_cell;
+      scratch.geometry_nodal.reinit(geo_cell_nodal);
+      const unsigned int        nl = scratch.flow_nodal.n_quadrature_points;
+      std::vector<Tensor<1, 3>> nodal_normal(nl);
+      scratch.geometry_nodal[vec].get_function_values(geometry.normal_field(), nodal_normal);
+      for (unsigned int q = 0; q < nl; ++q)
+        {
+          const double        dA = scratch.flow_nodal.JxW(q);
+          const Tensor<1, 3> &nt = nodal_normal[q];
+          const Point<3>     &x  = scratch.flow_nodal.quadrature_point(q);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const unsigned int ci = fe->system_to_component_index(i).first;
+              if (ci == curvature_component)
+                {
+                  const double phi = scratch.flow_nodal[curvature].value(i, q);
+                  copy.rhs(i) += inv_tau * (x * nt) * phi * dA;
+                  for (unsigned int j = 0; j < n; ++j)
+                    {
+                      const unsigned int cj = fe->system_to_component_index(j).first;
+                      if (cj >= position_component)
+                        copy.matrix(i, j) += inv_tau * (scratch.flow_nodal[position].value(j, q) * nt) * phi * dA;
+                      else if (cj < pressure_component)
+                        copy.matrix(i, j) -= (scratch.flow_nodal[velocity].value(j, q) * nt) * phi * dA;
+                    }
+                }
+              else if (ci >= position_component)
+                {
+                  const Tensor<1, 3> eta = scratch.flow_nodal[position].value(i, q);
+                  for (unsigned int j = 0; j < n; ++j)
+                    if (fe->system_to_component_index(j).first == curvature_component)
+                      copy.matrix(i, j) += scratch.flow_nodal[curvature].value(j, q) * (nt * eta) * dA;
+                }
+            }
+        }
+    };
+
+    auto copier = [&](const CopyData &copy) {
+      constraints.distribute_local_to_global(copy.matrix, copy.rhs, copy.indices, system_matrix, system_rhs);
+      constraints.distribute_local_to_global(copy.volume_column, copy.indices, volume_column);
+    };
+
+    using Iterator = typename DoFHandler<2, 3>::active_cell_iterator;
+    WorkStream::run(FilteredIterator<Iterator>(IteratorFilters::LocallyOwnedCell(), dofs.begin_active()),
+                    FilteredIterator<Iterator>(IteratorFilters::LocallyOwnedCell(), dofs.end()),
+                    worker,
+                    copier,
+                    ScratchData(geometry.mapping(), *fe, geometry.fe(), gauss, nodal),
+                    CopyData());
+    system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+    volume_column.compress(VectorOperation::add);
+  }
+
+  FluidDeformableSurface::StepResult
+  FluidDeformableSurface::advance(const double tau)
+  {
+    StepResult result;
+    assemble(tau);
+
+    const MPI_Comm comm = geometry.get_communicator();
+    VectorType     x1(owned, comm), x2(owned, comm);
+    try
+      {
+        SolverControl                                control(1, 0);
+        TrilinosWrappers::SolverDirect::AdditionalData data(false, direct_solver);
+        TrilinosWrappers::SolverDirect                 solver(control, data);
+        solver.initialize(system_matrix);
+        solver.solve(x1, system_rhs);
+        if (volume_constraint.enabled)
+          {
+            solver.solve(x2, volume_column);
+            // Bordering: γ from the constraint row (u·ñ, 1) = −(V^m − V₀)/τ.
+            const double volume_rate = -(geometry.measure().volume - target_volume) / tau;
+            result.gamma             = (volume_column * x1 - volume_rate) / (volume_column * x2);
+            x1.add(-result.gamma, x2);
+          }
+        result.linear_iterations = 1;
+      }
+    catch (const std::exception &exc)
+      {
+        result.failure = std::string("direct solver failed: ") + exc.what();
+        return result;
+      }
+    if (!std::isfinite(x1.l2_norm()))
+      {
+        result.failure = "the solution is not finite";
+        return result;
+      }
+    constraints.distribute(x1);
+    candidate               = x1;
+    result.dissipation_rate = dissipation_rate(candidate);
+    copy_new_position_to_geometry(candidate);
+    last_step_tau = tau;
+    result.solved = true;
+    return result;
+  }
+
+  void
+  FluidDeformableSurface::accept()
+  {
+    old_position     = current_position;
+    current_position = geometry.position();
+    current          = candidate;
+    last_tau         = last_step_tau;
+  }
+
+  void
+  FluidDeformableSurface::restore_last_state()
+  {
+    VectorType position(geometry.locally_owned_dofs(), geometry.get_communicator());
+    position = current_position;
+    geometry.set_position(position);
+    geometry.compute_curvature();
+  }
+
+  double
+  FluidDeformableSurface::kinetic_energy(const VectorType &state) const
+  {
+    const QGauss<2>                  q(3);
+    FEValues<2, 3>                   fe_values(geometry.mapping(), *fe, q, update_values | update_JxW_values);
+    const FEValuesExtractors::Vector velocity(velocity_component);
+    std::vector<Tensor<1, 3>>        u(q.size());
+    double                           energy = 0;
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[velocity].get_function_values(state, u);
+          for (unsigned int k = 0; k < q.size(); ++k)
+            energy += 0.5 * u[k].norm_square() * fe_values.JxW(k);
+        }
+    return Utilities::MPI::sum(energy, geometry.get_communicator());
+  }
+
+  double
+  FluidDeformableSurface::dissipation_rate(const VectorType &state) const
+  {
+    const QGauss<2>                  q(3);
+    FEValues<2, 3>                   fe_values(geometry.mapping(), *fe, q, update_gradients | update_normal_vectors |
+                                                                   update_JxW_values);
+    const FEValuesExtractors::Vector velocity(velocity_component);
+    std::vector<Tensor<2, 3>>        grad(q.size());
+    double                           rate = 0;
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[velocity].get_function_gradients(state, grad);
+          for (unsigned int k = 0; k < q.size(); ++k)
+            {
+              const Tensor<2, 3> sigma = SurfaceOperators::strain_rate(grad[k], fe_values.normal_vector(k));
+              rate += scalar_product(sigma, sigma) * fe_values.JxW(k);
+            }
+        }
+    return 2.0 / flow.reynolds_number * Utilities::MPI::sum(rate, geometry.get_communicator());
+  }
+
+  namespace
+  {
+    /// |u| from the velocity components.
+    class SpeedPostprocessor : public DataPostprocessorScalar<3>
+    {
+    public:
+      SpeedPostprocessor()
+        : DataPostprocessorScalar<3>("speed", update_values)
+      {}
+      void
+      evaluate_vector_field(const DataPostprocessorInputs::Vector<3> &inputs,
+                            std::vector<Vector<double>>              &computed) const override
+      {
+        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
+          computed[q](0) = std::sqrt(inputs.solution_values[q][0] * inputs.solution_values[q][0] +
+                                     inputs.solution_values[q][1] * inputs.solution_values[q][1] +
+                                     inputs.solution_values[q][2] * inputs.solution_values[q][2]);
+      }
+    };
+  } // namespace
+
+  void
+  FluidDeformableSurface::add_output_fields(DataOut<2, 3> &data_out) const
+  {
+    std::vector<std::string> names(3, "velocity");
+    names.insert(names.end(), {"pressure", "curvature_kappa", "bending_scalar", "new_position", "new_position",
+                               "new_position"});
+    std::vector<DataComponentInterpretation::DataComponentInterpretation> kinds(
+      3, DataComponentInterpretation::component_is_part_of_vector);
+    kinds.insert(kinds.end(), 3, DataComponentInterpretation::component_is_scalar);
+    kinds.insert(kinds.end(), 3, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(dofs, current, names, kinds);
+    static const SpeedPostprocessor speed;
+    data_out.add_data_vector(dofs, current, speed);
+  }
+} // namespace FluidSurface
