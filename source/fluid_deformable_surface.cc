@@ -50,7 +50,12 @@ namespace FluidSurface
     prm.declare_entry("enabled",
                       "true",
                       Patterns::Bool(),
-                      "Keep the enclosed volume V with the global multiplier γ: ∫u·ν = −(V − V₀)/τ.");
+                      "Keep the enclosed volume V with the global multiplier γ: ∫u·ν = −(V − V₀)/τ_c.");
+    prm.declare_entry("drift correction time",
+                      "0.01",
+                      Patterns::Double(0),
+                      "τ_drift: volume and area drifts are returned at the rate (V − V₀)/τ_c with "
+                      "τ_c = max(τ, τ_drift) (and likewise for the area through div_P u).");
     prm.leave_subsection();
   }
 
@@ -123,6 +128,9 @@ namespace FluidSurface
     bending.parse_parameters(prm);
     volume_constraint.parse_parameters(prm);
     redistribution.parse_parameters(prm);
+    prm.enter_subsection("volume constraint");
+    drift_correction_time = prm.get_double("drift correction time");
+    prm.leave_subsection();
     prm.enter_subsection("flow");
     flow.reynolds_number = prm.get_double("Re");
     flow.inertia         = prm.get_bool("inertia");
@@ -356,7 +364,8 @@ namespace FluidSurface
                   const FiniteElement<2, 3> &geometry_fe,
                   const Quadrature<2>       &gauss,
                   const Quadrature<2>       &nodal)
-        : flow(mapping, flow_fe, gauss, update_values | update_gradients | update_normal_vectors | update_JxW_values)
+        : flow(mapping, flow_fe, gauss, update_values | update_gradients | update_normal_vectors |
+                                          update_quadrature_points | update_JxW_values)
         , flow_nodal(mapping, flow_fe, nodal, update_values | update_gradients | update_quadrature_points |
                                                 update_JxW_values)
         , geometry(mapping, geometry_fe, gauss, update_values | update_gradients)
@@ -396,12 +405,12 @@ namespace FluidSurface
     volume_column = 0;
 
     const SurfaceGeometry::Measures m = geometry.measure();
-    // div_P u = s with s = −(A^m − A₀)/(τ A^m) returns any area drift (∫div_P u = dA/dt).
-    const double area_rate = area_correction ? -(m.area - target_area) / (tau * m.area) : 0.0;
+    // div_P u = s with s = −(A^m − A₀)/(τ_c A^m) returns any area drift (∫div_P u = dA/dt);
+    // τ_c = max(τ, τ_drift) keeps the correction bounded when a rejected step shrinks τ.
+    const double area_rate = area_correction ? -(m.area - target_area) / (drift_time(tau) * m.area) : 0.0;
     const double inv_tau   = 1.0 / tau;
     const double viscosity = 2.0 / flow.reynolds_number;
     const double inv_be    = bending.enabled ? 1.0 / bending.bending_number : 0.0;
-    const double mesh_velocity_scale = (last_tau > 0) ? 1.0 / last_tau : 0.0;
 
     const FEValuesExtractors::Vector velocity(velocity_component), position(position_component), vec(0);
     const FEValuesExtractors::Scalar pressure(pressure_component), curvature(curvature_component),
@@ -426,13 +435,13 @@ namespace FluidSurface
       scratch.flow.reinit(cell);
       scratch.geometry.reinit(geo_cell);
       const unsigned int        nq = scratch.flow.n_quadrature_points;
-      std::vector<Tensor<1, 3>> normal(nq), u_old(nq), x_now(nq), x_before(nq);
+      std::vector<Tensor<1, 3>> normal(nq), u_old(nq);
+      std::vector<Tensor<2, 3>> grad_u_old(nq);
       std::vector<Tensor<2, 3>> normal_gradient(nq);
       scratch.geometry[vec].get_function_values(geometry.normal_field(), normal);
       scratch.geometry[vec].get_function_gradients(geometry.normal_field(), normal_gradient);
-      scratch.geometry[vec].get_function_values(current_position, x_now);
-      scratch.geometry[vec].get_function_values(old_position, x_before);
       scratch.flow[velocity].get_function_values(current, u_old);
+      scratch.flow[velocity].get_function_gradients(current, grad_u_old);
 
       std::vector<Tensor<1, 3>> phi_u(n), phi_Y(n);
       std::vector<Tensor<2, 3>> grad_u(n), grad_Y(n), sigma_u(n);
@@ -447,8 +456,12 @@ namespace FluidSurface
           const Tensor<2, 3> B = -P * normal_gradient[q];
           const double       H = trace(B);
           const double       c = scalar_product(B, B) - 0.5 * H * H;
-          // Relative velocity w = u^m − (X^m − X^{m−1})/τ_{m−1}.
-          const Tensor<1, 3> w = u_old[q] - mesh_velocity_scale * (x_now[q] - x_before[q]);
+          // ∇_w u with w = u − (Y − X^m)/τ, linearized as ∇u^{m+1} u^m − ∇u^m (Y − X^m)/τ: the
+          // mesh velocity of this very step, so that a tangential jump of the nodes (BGN) carries
+          // the nodal velocities along consistently.
+          const Tensor<1, 3> &w        = u_old[q];
+          const Tensor<1, 3>  x_m      = scratch.flow.quadrature_point(q);
+          const Tensor<1, 3>  grad_u_x = grad_u_old[q] * x_m;
           for (unsigned int i = 0; i < n; ++i)
             {
               phi_u[i]   = scratch.flow[velocity].value(i, q);
@@ -460,6 +473,7 @@ namespace FluidSurface
               grad_k[i]  = scratch.flow[curvature].gradient(i, q);
               phi_y[i]   = scratch.flow[bending_scalar].value(i, q);
               grad_y[i]  = scratch.flow[bending_scalar].gradient(i, q);
+              phi_Y[i]   = scratch.flow[position].value(i, q);
               grad_Y[i]  = scratch.flow[position].gradient(i, q);
             }
           for (unsigned int i = 0; i < n; ++i)
@@ -469,6 +483,8 @@ namespace FluidSurface
                 {
                   if (flow.inertia)
                     copy.rhs(i) += inv_tau * (u_old[q] * phi_u[i]) * dA;
+                  if (flow.convection)
+                    copy.rhs(i) -= inv_tau * (grad_u_x * phi_u[i]) * dA;
                   copy.volume_column(i) += (phi_u[i] * normal[q]) * dA;
                   for (unsigned int j = 0; j < n; ++j)
                     {
@@ -487,6 +503,8 @@ namespace FluidSurface
                         }
                       else if (cj == pressure_component)
                         a -= phi_p[j] * div_u[i];
+                      else if (cj >= position_component && flow.convection)
+                        a -= inv_tau * ((grad_u_old[q] * phi_Y[j]) * phi_u[i]);
                       else if (cj == bending_component)
                         a -= inv_be * phi_y[j] * (normal[q] * phi_u[i]);
                       copy.matrix(i, j) += a * dA;
@@ -596,7 +614,7 @@ namespace FluidSurface
           {
             solver.solve(x2, volume_column);
             // Bordering: γ from the constraint row (u·ñ, 1) = −(V^m − V₀)/τ.
-            const double volume_rate = -(geometry.measure().volume - target_volume) / tau;
+            const double volume_rate = -(geometry.measure().volume - target_volume) / drift_time(tau);
             result.gamma             = (volume_column * x1 - volume_rate) / (volume_column * x2);
             x1.add(-result.gamma, x2);
           }
@@ -642,7 +660,7 @@ namespace FluidSurface
   double
   FluidDeformableSurface::kinetic_energy(const VectorType &state) const
   {
-    const QGauss<2>                  q(3);
+    const QGauss<2>                  q = geometry.quadrature();
     FEValues<2, 3>                   fe_values(geometry.mapping(), *fe, q, update_values | update_JxW_values);
     const FEValuesExtractors::Vector velocity(velocity_component);
     std::vector<Tensor<1, 3>>        u(q.size());
@@ -661,7 +679,7 @@ namespace FluidSurface
   double
   FluidDeformableSurface::dissipation_rate(const VectorType &state) const
   {
-    const QGauss<2>                  q(3);
+    const QGauss<2>                  q = geometry.quadrature();
     FEValues<2, 3>                   fe_values(geometry.mapping(), *fe, q, update_gradients | update_normal_vectors |
                                                                    update_JxW_values);
     const FEValuesExtractors::Vector velocity(velocity_component);

@@ -1,10 +1,12 @@
 // fluid_surface: fluid deformable surfaces (surface Navier–Stokes + Helfrich bending) with deal.II.
 #include <deal.II/base/mpi.h>
 
+#include <fluid_surface/axisymmetric_equilibrium.h>
 #include <fluid_surface/parameter_file.h>
 #include <fluid_surface/simulation.h>
 
 #include <iostream>
+#include <sstream>
 #include <string>
 
 namespace
@@ -42,6 +44,19 @@ main(int argc, char **argv)
           if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
             std::cout << usage;
           return args.empty() ? 2 : 0;
+        }
+      if (args[0] == "--equilibrium")
+        {
+          if (args.size() != 2)
+            {
+              error_message("--equilibrium needs exactly one parameter file; see fluid_surface --help");
+              return 2;
+            }
+          std::ostringstream out;
+          const int          status = run_equilibrium_command(args[1], out);
+          if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            std::cout << out.str();
+          return status;
         }
       dealii::ParameterHandler prm;
       Simulation::declare_parameters(prm);

@@ -162,6 +162,8 @@ namespace FluidSurface
     record_full_model_step(0.0, willmore, FluidDeformableSurface::StepResult());
     output.write(geometry, time.time(), [&](DataOut<2, 3> &data_out) { model.add_output_fields(data_out); });
 
+    double       previous_rise  = 0;
+    unsigned int n_energy_rises = 0;
     while (time.before_end())
       {
         const double                             tau  = time.step_size();
@@ -175,14 +177,25 @@ namespace FluidSurface
         const double new_willmore = geometry.compute_curvature();
         const double new_energy =
           model.kinetic_energy(model.candidate_solution()) + model.bending_energy(new_willmore);
-        if (!time.energy_acceptable(total_energy, new_energy))
+        const double rise = new_energy - total_energy;
+        if (!time.energy_acceptable(total_energy, new_energy, tau))
           {
-            model.restore_last_state();
-            std::ostringstream reason;
-            reason << "energy " << std::setprecision(10) << total_energy << " → " << new_energy;
-            time.reject(reason.str());
-            continue;
+            // A rise that does not shrink with τ (less than halving when τ halves) is a
+            // space-discretization effect that no step size removes: accept it, count it.
+            if (!(std::isfinite(rise) && previous_rise > 0 && rise > 0.5 * previous_rise))
+              {
+                previous_rise = rise;
+                model.restore_last_state();
+                std::ostringstream reason;
+                reason << "energy " << std::setprecision(10) << total_energy << " → " << new_energy;
+                time.reject(reason.str());
+                continue;
+              }
+            ++n_energy_rises;
+            pcout << "    warning: energy rose by " << std::setprecision(3) << rise << " at t = " << time.time()
+                  << " independently of τ (space discretization); step accepted" << std::endl;
           }
+        previous_rise = 0;
         model.accept();
         time.accept(tau);
         willmore = new_willmore;
@@ -205,9 +218,11 @@ namespace FluidSurface
         std::ofstream summary(output.directory() + "summary");
         diagnostics.write_summary(summary, total_energy, time.step_number(), time.n_rejected_steps(),
                                   wall_timer.wall_time());
+        summary << "energy rises accepted: " << n_energy_rises << '\n';
         pcout << "--- summary\n";
         diagnostics.write_summary(std::cout, total_energy, time.step_number(), time.n_rejected_steps(),
                                   wall_timer.wall_time());
+        std::cout << "energy rises accepted: " << n_energy_rises << std::endl;
       }
   }
 } // namespace FluidSurface

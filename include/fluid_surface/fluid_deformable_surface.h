@@ -240,6 +240,13 @@ namespace FluidSurface
     double                                 target_volume = 0;
     double                                 target_area   = 0;
     bool                                   area_correction = true;
+    double                                 drift_correction_time = 0.01;
+    /// The relaxation time τ_c = max(τ, τ_drift) of the area and volume drift corrections.
+    double
+    drift_time(const double tau) const
+    {
+      return std::max(tau, drift_correction_time);
+    }
   };
 } // namespace FluidSurface
 

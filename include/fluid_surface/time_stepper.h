@@ -50,9 +50,9 @@ namespace FluidSurface
       return end_time;
     }
 
-    /// Whether an energy change from @p old_energy to @p new_energy is acceptable.
+    /// Whether an energy change from @p old_energy to @p new_energy in a step @p tau_used is acceptable.
     bool
-    energy_acceptable(const double old_energy, const double new_energy) const;
+    energy_acceptable(const double old_energy, const double new_energy, const double tau_used) const;
 
     /// Advances time by the τ just used; grows τ after enough easy steps.
     void
@@ -94,7 +94,7 @@ namespace FluidSurface
     double       growth           = 1.25;
     double       shrink           = 0.5;
     unsigned int easy_steps       = 5;
-    double       energy_tolerance = 1e-10;
+    double       energy_tolerance = 1e-4;
     bool         adaptive         = true;
 
     double       current_time = 0;
