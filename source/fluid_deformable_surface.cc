@@ -75,6 +75,12 @@ namespace FluidSurface
                       "true",
                       Patterns::Bool(),
                       "Nodal (Gauss–Lobatto) quadrature for (Y·ñ, φ) and (κñ, η), as in the BGN scheme.");
+    prm.declare_entry("relaxation time",
+                      "0.05",
+                      Patterns::Double(0),
+                      "T_r of the tangential damping (T_r/τ)(P̃(Y − X^m), η)_h added to the BGN equation: "
+                      "the mesh relaxes towards the BGN distribution on the time scale T_r h² instead of "
+                      "jumping there within one step, so that steps τ → 0 change nothing. 0: plain BGN.");
     prm.declare_entry("mesh quality floor",
                       "0.02",
                       Patterns::Double(0, 1),
@@ -87,6 +93,7 @@ namespace FluidSurface
   {
     prm.enter_subsection("mesh redistribution");
     lumped             = prm.get_bool("lumped");
+    relaxation_time    = prm.get_double("relaxation time");
     mesh_quality_floor = prm.get_double("mesh quality floor");
     prm.leave_subsection();
   }
@@ -110,6 +117,10 @@ namespace FluidSurface
                       "ω₀ of the initial rigid rotation u₀ = ω₀ e × (x − c).");
     prm.declare_entry("rotation axis", "0, 0, 1", Patterns::List(Patterns::Double(), 3, 3), "Axis e (normalized).");
     prm.declare_entry("rotation centre", "0, 0, 0", Patterns::List(Patterns::Double(), 3, 3), "Centre c.");
+    prm.declare_entry("translation velocity",
+                      "0, 0, 0",
+                      Patterns::List(Patterns::Double(), 3, 3),
+                      "Uniform velocity U added to u₀ (a rigid translation).");
     prm.declare_entry("velocity perturbation",
                       "0",
                       Patterns::Double(0),
@@ -148,6 +159,9 @@ namespace FluidSurface
     if (rotation_axis.norm() == 0)
       throw_invalid_entry("initial state/rotation axis", prm.get("rotation axis"), "a non-zero vector");
     rotation_axis /= rotation_axis.norm();
+    const auto U = Utilities::split_string_list(prm.get("translation velocity"));
+    for (unsigned int d = 0; d < 3; ++d)
+      translation_velocity[d] = Utilities::string_to_double(U[d]);
     velocity_noise = prm.get_double("velocity perturbation");
     shape_noise    = prm.get_double("shape perturbation");
     random_seed    = prm.get_integer("random seed");
@@ -195,17 +209,19 @@ namespace FluidSurface
       std::array<Mode, 8> modes;
     };
 
-    /// u₀ = ω e × (x − c) + ε_u r(x) in the velocity components, 0 elsewhere.
+    /// u₀ = U + ω e × (x − c) + ε_u r(x) in the velocity components, 0 elsewhere.
     class InitialVelocity : public Function<3>
     {
     public:
-      InitialVelocity(const unsigned int n_components,
-                      const double       omega,
+      InitialVelocity(const unsigned int  n_components,
+                      const Tensor<1, 3> &translation,
+                      const double        omega,
                       const Tensor<1, 3> &axis,
                       const Point<3>     &centre,
                       const double        noise,
                       const unsigned int  seed)
         : Function<3>(n_components)
+        , translation(translation)
         , omega(omega)
         , axis(axis)
         , centre(centre)
@@ -218,10 +234,11 @@ namespace FluidSurface
         if (component >= 3)
           return 0;
         const Tensor<1, 3> u = omega * cross_product_3d(axis, x - centre);
-        return u[component] + noise * random[component](x);
+        return translation[component] + u[component] + noise * random[component](x);
       }
 
     private:
+      Tensor<1, 3>                     translation;
       double                           omega;
       Tensor<1, 3>                     axis;
       Point<3>                         centre;
@@ -337,6 +354,7 @@ namespace FluidSurface
     VectorTools::interpolate(geometry.mapping(),
                              dofs,
                              InitialVelocity(fe->n_components(),
+                                             translation_velocity,
                                              initial_angular_velocity,
                                              rotation_axis,
                                              rotation_centre,
@@ -411,6 +429,7 @@ namespace FluidSurface
     const double inv_tau   = 1.0 / tau;
     const double viscosity = 2.0 / flow.reynolds_number;
     const double inv_be    = bending.enabled ? 1.0 / bending.bending_number : 0.0;
+    const double damping   = redistribution.relaxation_time / tau;
 
     const FEValuesExtractors::Vector velocity(velocity_component), position(position_component), vec(0);
     const FEValuesExtractors::Scalar pressure(pressure_component), curvature(curvature_component),
@@ -569,10 +588,18 @@ namespace FluidSurface
                 }
               else if (ci >= position_component)
                 {
-                  const Tensor<1, 3> eta = scratch.flow_nodal[position].value(i, q);
+                  // (κñ, η)_h, and the tangential damping (T_r/τ)(P̃(Y − X^m), η)_h, P̃ = I − ññ.
+                  const Tensor<1, 3> eta         = scratch.flow_nodal[position].value(i, q);
+                  const Tensor<1, 3> eta_tangent = eta - (eta * nt) * nt;
+                  copy.rhs(i) += damping * (x * eta_tangent) * dA;
                   for (unsigned int j = 0; j < n; ++j)
-                    if (fe->system_to_component_index(j).first == curvature_component)
-                      copy.matrix(i, j) += scratch.flow_nodal[curvature].value(j, q) * (nt * eta) * dA;
+                    {
+                      const unsigned int cj = fe->system_to_component_index(j).first;
+                      if (cj == curvature_component)
+                        copy.matrix(i, j) += scratch.flow_nodal[curvature].value(j, q) * (nt * eta) * dA;
+                      else if (cj >= position_component && damping > 0)
+                        copy.matrix(i, j) += damping * (scratch.flow_nodal[position].value(j, q) * eta_tangent) * dA;
+                    }
                 }
             }
         }

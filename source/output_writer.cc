@@ -53,6 +53,10 @@ namespace FluidSurface
                       "10",
                       Patterns::Integer(1),
                       "Report a step on the screen every N steps (and the last one).");
+    prm.declare_entry("report wall time",
+                      "true",
+                      Patterns::Bool(),
+                      "Show wall time per step and ETA on the screen (off in tests: timings are not stable).");
     prm.declare_entry("overwrite",
                       "false",
                       Patterns::Bool(),
@@ -74,6 +78,7 @@ namespace FluidSurface
     subdivisions    = prm.get_integer("subdivisions");
     overwrite       = prm.get_bool("overwrite");
     screen_every    = prm.get_integer("screen interval");
+    show_wall_time  = prm.get_bool("report wall time");
     prm.leave_subsection();
   }
 

@@ -143,13 +143,15 @@ namespace FluidSurface
         pcout << "*** Step " << time.step_number() << "  t = " << std::setprecision(5) << time.time()
               << "  τ = " << std::setprecision(3) << tau << "  (" << time.n_rejected_steps() << " rejected so far)\n"
               << std::setprecision(8) << "    F = " << total_energy << " (kin " << v.kinetic_energy << ", bend "
-              << bending_energy << ")  ω = " << std::setprecision(5) << v.angular_velocity << '\n'
+              << bending_energy << ")  ω = " << std::setprecision(5) << v.angular_velocity
+              << "  |∫u| = " << v.linear_momentum.norm() << '\n'
               << std::setprecision(2) << std::scientific << "    ΔA/A = " << diagnostics.max_area_drift()
               << "  ΔV/V = " << diagnostics.max_volume_drift()
               << "  ΔL/L = " << diagnostics.max_angular_momentum_drift() << "  e(λ) = " << v.symmetry_deviation
-              << "  mesh quality " << std::fixed << v.mesh_quality << '\n'
-              << "    " << per_step << " s/step, ETA " << static_cast<long>(eta) << " s" << std::defaultfloat
-              << std::endl;
+              << "  mesh quality " << std::fixed << v.mesh_quality << std::defaultfloat << '\n';
+        if (output.report_wall_time())
+          pcout << "    " << std::setprecision(3) << per_step << " s/step, ETA " << static_cast<long>(eta) << " s\n";
+        pcout << std::flush;
       }
   }
 
@@ -163,6 +165,7 @@ namespace FluidSurface
     output.write(geometry, time.time(), [&](DataOut<2, 3> &data_out) { model.add_output_fields(data_out); });
 
     double       previous_rise  = 0;
+    double       tau_before_rejections = 0;
     unsigned int n_energy_rises = 0;
     while (time.before_end())
       {
@@ -182,8 +185,12 @@ namespace FluidSurface
           {
             // A rise that does not shrink with τ (less than halving when τ halves) is a
             // space-discretization effect that no step size removes: accept it, count it.
-            if (!(std::isfinite(rise) && previous_rise > 0 && rise > 0.5 * previous_rise))
+            // Rises above 1e-3 F per step are never accepted: the run stops (τ_min) instead.
+            if (!(std::isfinite(rise) && previous_rise > 0 && rise > 0.5 * previous_rise &&
+                  rise < 1e-3 * std::abs(total_energy)))
               {
+                if (previous_rise == 0)
+                  tau_before_rejections = tau;
                 previous_rise = rise;
                 model.restore_last_state();
                 std::ostringstream reason;
@@ -193,7 +200,8 @@ namespace FluidSurface
               }
             ++n_energy_rises;
             pcout << "    warning: energy rose by " << std::setprecision(3) << rise << " at t = " << time.time()
-                  << " independently of τ (space discretization); step accepted" << std::endl;
+                  << " at a rate that does not fall with τ (space discretization); step accepted" << std::endl;
+            time.set_step_size(tau_before_rejections);
           }
         previous_rise = 0;
         model.accept();
@@ -219,10 +227,16 @@ namespace FluidSurface
         diagnostics.write_summary(summary, total_energy, time.step_number(), time.n_rejected_steps(),
                                   wall_timer.wall_time());
         summary << "energy rises accepted: " << n_energy_rises << '\n';
-        pcout << "--- summary\n";
-        diagnostics.write_summary(std::cout, total_energy, time.step_number(), time.n_rejected_steps(),
+        std::ostringstream text;
+        diagnostics.write_summary(text, total_energy, time.step_number(), time.n_rejected_steps(),
                                   wall_timer.wall_time());
-        std::cout << "energy rises accepted: " << n_energy_rises << std::endl;
+        text << "energy rises accepted: " << n_energy_rises << '\n';
+        std::istringstream lines(text.str());
+        std::cout << "--- summary\n";
+        for (std::string line; std::getline(lines, line);)
+          if (output.report_wall_time() || line.rfind("wall time", 0) != 0)
+            std::cout << line << '\n';
+        std::cout << std::flush;
       }
   }
 } // namespace FluidSurface

@@ -70,6 +70,7 @@ namespace FluidSurface
     parse_parameters(dealii::ParameterHandler &prm);
 
     bool   lumped            = true;
+    double relaxation_time   = 0.05; ///< T_r of the tangential damping (0: plain BGN)
     double mesh_quality_floor = 0.05; ///< a run stops when the mesh quality falls below this
   };
 
@@ -212,7 +213,8 @@ namespace FluidSurface
     VolumeConstraint   volume_constraint;
     MeshRedistribution redistribution;
 
-    // Initial velocity: rigid rotation ω e × (x − c) plus seeded noise.
+    // Initial velocity: translation U plus rigid rotation ω e × (x − c) plus seeded noise.
+    dealii::Tensor<1, 3> translation_velocity;
     double               initial_angular_velocity = 0;
     dealii::Tensor<1, 3> rotation_axis;
     dealii::Point<3>     rotation_centre;

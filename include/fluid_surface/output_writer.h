@@ -59,6 +59,13 @@ namespace FluidSurface
       return screen_every;
     }
 
+    /// Whether the screen shows timings.
+    bool
+    report_wall_time() const
+    {
+      return show_wall_time;
+    }
+
     /// Number of VTU files written so far (the NNNNN of the next one).
     unsigned int
     n_written() const
@@ -85,6 +92,7 @@ namespace FluidSurface
     bool         overwrite        = false;
     bool         write_vtu        = true;
     unsigned int screen_every     = 10;
+    bool         show_wall_time   = true;
 
     double                                      last_output_time = -1e300;
     std::vector<std::pair<double, std::string>> times_and_names;

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <string>
 
 namespace FluidSurface
@@ -57,6 +58,13 @@ namespace FluidSurface
     /// Advances time by the τ just used; grows τ after enough easy steps.
     void
     accept(const double tau_used);
+
+    /// Sets τ for the next step (clipped to [τ_min, τ_max]).
+    void
+    set_step_size(const double new_tau)
+    {
+      tau = std::min(std::max(new_tau, tau_min), tau_max);
+    }
 
     /// Shrinks τ; throws std::runtime_error with @p reason when τ falls below τ_min.
     void
