@@ -164,7 +164,7 @@ namespace FluidSurface
     record_full_model_step(0.0, willmore, FluidDeformableSurface::StepResult());
     output.write(geometry, time.time(), [&](DataOut<2, 3> &data_out) { model.add_output_fields(data_out); });
 
-    double       previous_rise  = 0;
+    double       previous_rate  = 0;
     double       tau_before_rejections = 0;
     unsigned int n_energy_rises = 0;
     while (time.before_end())
@@ -183,15 +183,16 @@ namespace FluidSurface
         const double rise = new_energy - total_energy;
         if (!time.energy_acceptable(total_energy, new_energy, tau))
           {
-            // A rise that does not shrink with τ (less than halving when τ halves) is a
-            // space-discretization effect that no step size removes: accept it, count it.
-            // Rises above 1e-3 F per step are never accepted: the run stops (τ_min) instead.
-            if (!(std::isfinite(rise) && previous_rise > 0 && rise > 0.5 * previous_rise &&
+            // A rise whose rate rise/τ does not fall when τ is halved is a space-discretization
+            // effect that no step size removes: accept it and count it, unless it exceeds 1e-3 F
+            // in one step (then the run stops once τ < τ_min).
+            const double rate = rise / tau;
+            if (!(std::isfinite(rise) && previous_rate > 0 && rate > 0.5 * previous_rate &&
                   rise < 1e-3 * std::abs(total_energy)))
               {
-                if (previous_rise == 0)
+                if (previous_rate == 0)
                   tau_before_rejections = tau;
-                previous_rise = rise;
+                previous_rate = rate;
                 model.restore_last_state();
                 std::ostringstream reason;
                 reason << "energy " << std::setprecision(10) << total_energy << " → " << new_energy;
@@ -203,7 +204,7 @@ namespace FluidSurface
                   << " at a rate that does not fall with τ (space discretization); step accepted" << std::endl;
             time.set_step_size(tau_before_rejections);
           }
-        previous_rise = 0;
+        previous_rate = 0;
         model.accept();
         time.accept(tau);
         willmore = new_willmore;

@@ -1,0 +1,86 @@
+"""Prints the README tables (markdown) from results.csv: /usr/bin/python3 make_tables.py [results.csv]."""
+import csv, math, os, sys
+
+path = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "results.csv")
+rows = list(csv.DictReader(open(path)))
+f = float
+
+def rate(prev, cur):
+    return f"{math.log2(f(prev) / f(cur)):.2f}" if prev is not None and f(cur) > 0 else ""
+
+def table(header, lines):
+    print("| " + " | ".join(header) + " |")
+    print("|" + "---|" * len(header))
+    for line in lines:
+        print("| " + " | ".join(str(x) for x in line) + " |")
+    print()
+
+for shape in ("sphere", "ellipsoid"):
+    for k in ("2", "3"):
+        sel = [r for r in rows if r["case"] == "convergence" and r["shape"] == shape and r["k"] == k]
+        if not sel:
+            continue
+        print(f"**{shape}, k = {k}** (direct KLU)\n")
+        lines, prev = [], None
+        for r in sel:
+            line = [r["refinement"], r["dofs"]]
+            for key in ("velocity L2", "gradient L2", "pressure L2", "normal L2"):
+                line += [f"{f(r[key]):.3e}", rate(prev[key] if prev else None, r[key])]
+            line.append(f"{f(r['wall time']):.3g}")
+            lines.append(line)
+            prev = r
+        table(["ref", "DoFs", "‖u−u_h‖", "rate", "‖∇_P(u−u_h)‖", "rate", "‖p−p_h‖", "rate", "‖u_h·ν‖", "rate",
+               "wall [s]"], lines)
+
+print("**Stationary solvers** (sphere, k = 2; solver wall time incl. factorization or AMG setup, median of 3)\n")
+lines = []
+for ref in sorted({r["refinement"] for r in rows if r["case"] == "stationary solver"}, key=int):
+    klu = [r for r in rows if r["case"] == "convergence" and r["shape"] == "sphere" and r["k"] == "2" and r["refinement"] == ref]
+    mumps = [r for r in rows if r["case"] == "stationary solver" and "Mumps" in r["solver"] and r["refinement"] == ref]
+    block = [r for r in rows if r["case"] == "stationary solver" and r["solver"].startswith("block") and r["refinement"] == ref]
+    lines.append([ref, block[0]["dofs"],
+                  f"{f(klu[0]['solve time']):.3g}" if klu else "", f"{f(mumps[0]['solve time']):.3g}" if mumps else "",
+                  f"{f(block[0]['solve time']):.3g}" if block else "", block[0]["total iterations"] if block else ""])
+table(["ref", "DoFs", "KLU solve [s]", "MUMPS solve [s]", "block GMRES solve [s]", "GMRES its"], lines)
+
+print("**Penalty variants** (sphere, k = 2; default: exact normal, β = 10, q = 3)\n")
+lines = []
+for r in rows:
+    if r["case"].startswith("penalty"):
+        lines.append([r["case"].replace("penalty ", ""), r["refinement"], f"{f(r['velocity L2']):.3e}",
+                      f"{f(r['gradient L2']):.3e}", f"{f(r['pressure L2']):.3e}", f"{f(r['normal L2']):.3e}"])
+table(["variant", "ref", "‖u−u_h‖", "‖∇_P(u−u_h)‖", "‖p−p_h‖", "‖u_h·ν‖"], lines)
+
+print("**Killing field** u = e_z × x, Re = 10, BDF2, τ = 0.05, t ∈ [0, 1]\n")
+lines, prev = [], None
+for r in rows:
+    if r["case"] == "killing":
+        if prev is not None and prev["penalty factor"] != r["penalty factor"]:
+            prev = None
+        lines.append([r["penalty factor"], r["refinement"], r["dofs"], f"{f(r['energy change']):.3e}",
+                      rate(prev["energy change"] if prev else None, r["energy change"]), f"{f(r['velocity L2']):.3e}",
+                      f"{f(r['normal L2']):.3e}", r["factorizations"], r["total iterations"], f"{f(r['wall time']):.3g}"])
+        prev = r
+table(["β", "ref", "DoFs", "|F(1)−F(0)|/F(0)", "rate", "‖u(1)−u_h(1)‖", "‖u_h·ν‖", "LU", "GMRES its", "wall [s]"], lines)
+
+for l in ("2", "3"):
+    print(f"**Decaying mode l = {l}** (Navier–Stokes, Re = 10, exact rate λ = {f([r for r in rows if r['case'].startswith('decay l=' + l)][0]['exact rate']):.4f})\n")
+    lines = []
+    for r in rows:
+        if r["case"] in (f"decay l={l} h", f"decay l={l} tau"):
+            dev = f(r["measured rate"]) / f(r["exact rate"]) - 1
+            lines.append([r["case"].split()[-1], r["scheme"], r["refinement"], r["dofs"], r["tau"],
+                          f"{f(r['measured rate']):.6f}", f"{100 * dev:+.3f}%", f"{f(r['velocity L2']):.3e}",
+                          f"{f(r['wall time']):.3g}"])
+    table(["series", "scheme", "ref", "DoFs", "τ", "measured λ", "deviation", "‖u(1)−u_h(1)‖", "wall [s]"], lines)
+
+print("**Time-dependent solvers** (decaying mode l = 2, Re = 10, BDF2, τ = 0.05, 20 steps; median of 3)\n")
+lines = []
+for r in rows:
+    if r["case"].startswith("time solver"):
+        name = ("NS" if r["convection"] == "true" else "Stokes") + ", " + r["solver"] + (" (no reuse)" if "no reuse" in r["case"] else "")
+        lines.append([name, r["refinement"], r["dofs"], r["factorizations"], r["total iterations"], r["max iterations"],
+                      f"{f(r['assemble time']):.3g}", f"{f(r['solve time']):.3g}", f"{f(r['wall time']):.3g}",
+                      f"{f(r['velocity L2']):.3e}"])
+table(["method", "ref", "DoFs", "LU/AMG setups", "its total", "its max/step", "assembly [s]", "solve [s]", "wall [s]",
+       "‖u(1)−u_h(1)‖"], lines)

@@ -1,0 +1,19 @@
+#!/bin/bash
+# Surface Stokes / Navier–Stokes on a fixed surface: convergence, dynamics and work–precision.
+# Usage (from the repository root): benchmarks/surface_stokes/run.sh [--quick]
+#   BUILD_DIR (default: build) is a Release build directory of the project; the library is built
+#   there if missing, the driver in $BUILD_DIR/benchmark-surface-stokes.
+# Writes benchmarks/surface_stokes/results.csv and work_precision.png.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+build="$(cd "${BUILD_DIR:-$root/build}" 2>/dev/null && pwd || true)"
+if [ -z "$build" ]; then
+  build="$root/build"; mkdir -p "$build"
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+fi
+[ -f "$build/libfluid_surface_library.so" ] || make -C "$build" -j1 fluid_surface_library
+cmake -S "$here" -B "$build/benchmark-surface-stokes" -DCMAKE_BUILD_TYPE=Release \
+      -DFLUID_SURFACE_BUILD_DIR="$build" > /dev/null
+make -C "$build/benchmark-surface-stokes" -j1 > /dev/null
+/usr/bin/python3 "$here/run_cases.py" "$build/benchmark-surface-stokes/surface_stokes_driver" "$here" "$@"

@@ -1,0 +1,145 @@
+"""Runs the surface Stokes benchmark cases through the driver; writes results.csv and the PNG.
+Called by run.sh: run_cases.py DRIVER OUTDIR [--quick]."""
+import csv, math, os, statistics, subprocess, sys, tempfile
+
+driver, outdir = sys.argv[1], sys.argv[2]
+quick = "--quick" in sys.argv[3:]
+repeats = 1 if quick else 3
+workdir = tempfile.mkdtemp(prefix="surface_stokes_")
+
+def run(settings, repeat=repeats):
+    """One case; settings: dict 'section/entry' -> value. Returns the driver's key: value dict
+    with 'wall time' (and solve/assemble time) replaced by the median over `repeat` runs."""
+    args = [driver, "output/write vtu=false", f"output/output directory={workdir}", "output/overwrite=true"]
+    args += [f"{k}={v}" for k, v in settings.items()]
+    results = []
+    for _ in range(repeat):
+        out = subprocess.run(args, check=True, capture_output=True, text=True).stdout
+        results.append(dict(line.split(": ", 1) for line in out.strip().splitlines()))
+    r = dict(results[0])
+    for key in ("wall time", "solve time", "assemble time"):
+        r[key] = statistics.median(float(x[key]) for x in results)
+    return r
+
+columns = ["case", "problem", "shape", "k", "refinement", "dofs", "solver", "scheme", "convection", "Re",
+           "penalty factor", "tau", "velocity L2", "tangential L2", "gradient L2", "pressure L2", "normal L2",
+           "energy change", "measured rate", "exact rate", "steps", "total iterations", "max iterations",
+           "factorizations", "assemble time", "solve time", "wall time"]
+rows = []
+
+def record(case, settings, r):
+    s = dict(settings)
+    row = {"case": case, "problem": s.get("fixed surface/problem", "manufactured sphere"),
+           "shape": s.get("geometry/shape", "sphere"), "k": s.get("geometry/position degree", "2"),
+           "refinement": s["geometry/refinement"], "dofs": r["dofs"],
+           "solver": s.get("flow/linear solver", "direct") + ("" if s.get("flow/linear solver", "direct") != "direct"
+                                                             else " " + s.get("flow/direct solver", "Amesos_Klu")),
+           "scheme": s.get("flow/time scheme", "BDF2"), "convection": s.get("flow/convection", "true"),
+           "Re": s.get("flow/Re", "1"), "penalty factor": s.get("flow/penalty factor", "10"),
+           "tau": s.get("time stepping/time step", "")}
+    for key, name in [("velocity", "velocity L2"), ("tangential", "tangential L2"), ("gradient", "gradient L2"),
+                      ("pressure", "pressure L2"), ("normal", "normal L2")]:
+        row[name] = r[key]
+    for key in ["energy change", "measured rate", "exact rate", "steps", "total iterations", "max iterations",
+                "factorizations", "assemble time", "solve time", "wall time"]:
+        row[key] = r[key]
+    rows.append(row)
+    print(case, {k: row[k] for k in ("shape", "k", "refinement", "solver", "tau", "gradient L2", "measured rate",
+                                       "energy change", "max iterations", "wall time")}, flush=True)
+
+max_ref = 3 if quick else 5
+# 1. Manufactured stationary Stokes: convergence for k = 2, 3 on sphere and ellipsoid (direct solver).
+for shape in ("sphere", "ellipsoid"):
+    for k in (2, 3):
+        for ref in range(1, max_ref + 1):
+            s = {"geometry/shape": shape, "geometry/refinement": ref, "geometry/position degree": k}
+            if shape == "ellipsoid":
+                s.update({"geometry/semi-axes": "1.27,1.27,0.47", "fixed surface/problem": "manufactured ellipsoid"})
+            record("convergence", s, run(s))
+# 2. Solvers on the stationary problem (sphere, k = 2): MUMPS and the block preconditioner.
+for solver in (("direct", "Amesos_Mumps"), ("block preconditioned", None)):
+    for ref in range(1, max_ref + 1):
+        s = {"geometry/shape": "sphere", "geometry/refinement": ref, "flow/linear solver": solver[0]}
+        if solver[1]:
+            s["flow/direct solver"] = solver[1]
+        record("stationary solver", s, run(s))
+# 3. Penalty choices (sphere, k = 2): exponent 2 vs 3, and the normal used.
+for ref in range(2, max_ref + 1):
+    for extra in ({"flow/penalty exponent": 2}, {"flow/penalty normal": "continuous"}, {"flow/penalty normal": "cell"},
+                  {"flow/penalty factor": 1000}):
+        s = {"geometry/shape": "sphere", "geometry/refinement": ref, **extra}
+        r = run(s, 1)
+        record("penalty " + ",".join(f"{k.split('/')[1]}={v}" for k, v in extra.items()), s, r)
+# 4. Killing field, t in [0, 1], Re = 10, penalty factor 1000 and 10.
+for beta in (1000, 10):
+    for ref in range(2, (4 if quick else 5) + 1):
+        s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface/problem": "killing",
+             "flow/Re": 10, "flow/penalty factor": beta, "time stepping/time step": 0.05, "time stepping/end time": 1}
+        record("killing", s, run(s, 1))
+# 5. Decaying modes l = 2, 3 with convection, Re = 10: h-convergence at tau = 0.0125, tau-convergence at ref 4.
+for l in (2, 3):
+    for ref in range(2, (3 if quick else 4) + 1):
+        s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface/problem": "decaying mode",
+             "fixed surface/mode number": l, "flow/Re": 10, "time stepping/time step": 0.0125,
+             "time stepping/end time": 1}
+        record(f"decay l={l} h", s, run(s, 1))
+    for scheme in ("BDF1", "BDF2"):
+        for tau in (0.1, 0.05, 0.025) if not quick else (0.1, 0.05):
+            s = {"geometry/shape": "sphere", "geometry/refinement": 3 if quick else 4,
+                 "fixed surface/problem": "decaying mode", "fixed surface/mode number": l, "flow/Re": 10,
+                 "flow/time scheme": scheme, "time stepping/time step": tau, "time stepping/end time": 1}
+            record(f"decay l={l} tau", s, run(s, 1))
+# 6. Time-dependent solvers (decaying mode l = 2, BDF2, tau = 0.05): direct with reuse, direct without, block.
+for ref in range(2, (3 if quick else 4) + 1):
+    for extra in ({}, {"flow/reuse factorization": "false"}, {"flow/linear solver": "block preconditioned"},
+                  {"flow/convection": "false"}, {"flow/convection": "false", "flow/linear solver": "block preconditioned"}):
+        s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface/problem": "decaying mode",
+             "flow/Re": 10, "time stepping/time step": 0.05, "time stepping/end time": 1, **extra}
+        tag = "time solver" + ("" if "flow/reuse factorization" not in extra else " no reuse")
+        record(tag, s, run(s))
+
+with open(os.path.join(outdir, "results.csv"), "w", newline="") as f:
+    w = csv.DictWriter(f, fieldnames=columns)
+    w.writeheader()
+    w.writerows(rows)
+
+# Work–precision figure.
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
+ax = axes[0]
+def series(filter_fn):
+    pts = [(float(r["wall time"]), float(r["gradient L2"])) for r in rows if filter_fn(r)]
+    return zip(*sorted(pts)) if pts else ([], [])
+for label, fn, style in [
+        ("direct KLU, k=2", lambda r: r["case"] == "convergence" and r["shape"] == "sphere" and str(r["k"]) == "2", "o-"),
+        ("direct KLU, k=3", lambda r: r["case"] == "convergence" and r["shape"] == "sphere" and str(r["k"]) == "3", "s-"),
+        ("direct MUMPS, k=2", lambda r: r["case"] == "stationary solver" and "Mumps" in r["solver"], "^-"),
+        ("GMRES + block AMG, k=2", lambda r: r["case"] == "stationary solver" and r["solver"].startswith("block"), "d-")]:
+    x, y = series(fn)
+    ax.loglog(list(x), list(y), style, label=label)
+ax.set_xlabel("wall time [s] (median of %d)" % repeats)
+ax.set_ylabel(r"$\|\nabla_P(u-u_h)\|_{L^2}$")
+ax.set_title("stationary Stokes, manufactured solution, unit sphere")
+ax.grid(True, which="both", alpha=0.3)
+ax.legend()
+ax = axes[1]
+for label, fn, style in [
+        ("NS, direct + reuse", lambda r: r["case"] == "time solver" and r["convection"] == "true" and r["solver"].startswith("direct"), "o-"),
+        ("NS, direct, no reuse", lambda r: r["case"] == "time solver no reuse", "x--"),
+        ("NS, block AMG", lambda r: r["case"] == "time solver" and r["convection"] == "true" and r["solver"].startswith("block"), "d-"),
+        ("Stokes, direct", lambda r: r["case"] == "time solver" and r["convection"] == "false" and r["solver"].startswith("direct"), "s-"),
+        ("Stokes, block AMG", lambda r: r["case"] == "time solver" and r["convection"] == "false" and r["solver"].startswith("block"), "^-")]:
+    pts = sorted((float(r["wall time"]), float(r["velocity L2"])) for r in rows if fn(r))
+    if pts:
+        x, y = zip(*pts)
+        ax.loglog(x, y, style, label=label)
+ax.set_xlabel("wall time [s] for t in [0, 1], 20 BDF2 steps")
+ax.set_ylabel(r"$\|u(1)-u_h(1)\|_{L^2}$")
+ax.set_title(r"decaying mode curl$_S Y_2^0$, Re = 10, refinements 2..")
+ax.grid(True, which="both", alpha=0.3)
+ax.legend()
+fig.tight_layout()
+fig.savefig(os.path.join(outdir, "work_precision.png"), dpi=120)
+print("wrote", os.path.join(outdir, "results.csv"), "and work_precision.png")
