@@ -189,11 +189,8 @@ namespace FluidSurface
                       Patterns::Double(),
                       "ω of the Killing field u = ω e_z × x.");
     prm.leave_subsection();
-    prm.enter_subsection("time stepping");
-    prm.declare_entry("end time", "1", Patterns::Double(0), "End time T of the run.");
-    prm.declare_entry("time step", "0.01", Patterns::Double(0), "Time step τ (constant).");
-    prm.leave_subsection();
-    SurfaceFlow::declare_parameters(prm);
+    // `time stepping` (end time, time step) is TimeStepper's and `flow` is SurfaceFlow's; the
+    // Simulation declares both once.
   }
 
   void

@@ -25,20 +25,16 @@ namespace FluidSurface
     prm.enter_subsection("model");
     prm.declare_entry("scene",
                       "geometry",
-                      Patterns::Selection("geometry|full"),
+                      Patterns::Selection("geometry|fixed surface|full"),
                       "What the run computes. geometry: build the surface, measure it (area, volume, "
-                      "reduced volume, Willmore energy ½∫H²) and write it; no time steps. full: the fluid "
+                      "reduced volume, Willmore energy ½∫H²) and write it; no time steps. fixed surface: surface "
+                      "(Navier–)Stokes on the frozen surface, the verification problems of subsection fixed "
+                      "surface (no geometry update, bending or volume multiplier). full: the fluid "
                       "deformable surface (surface Navier–Stokes, bending, volume constraint, mesh "
                       "redistribution) on the moving surface.");
     prm.leave_subsection();
-    prm.enter_subsection("flow");
-    prm.declare_entry("Re",
-                      "1",
-                      Patterns::Double(0, Patterns::Double::max_double_value),
-                      "Reynolds number Re = ρUL/η; the viscous term is (2/Re)(σ(u), σ(v)).");
-    prm.declare_entry("inertia", "true", Patterns::Bool(), "Assemble ∂_t u (false: the Stokes limit).");
-    prm.declare_entry("convection", "true", Patterns::Bool(), "Assemble the convection ∇_w u, w = u − ∂_t X.");
-    prm.leave_subsection();
+    SurfaceFlow::declare_parameters(prm);
+    FixedSurfaceScene::declare_parameters(prm);
     SurfaceGeometry::declare_parameters(prm);
     OutputWriter::declare_parameters(prm);
     TimeStepper::declare_parameters(prm);
@@ -50,10 +46,13 @@ namespace FluidSurface
   Simulation::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("model");
-    scene = (prm.get("scene") == "full" ? Scene::full : Scene::geometry);
+    const std::string name = prm.get("scene");
+    scene = (name == "full" ? Scene::full : name == "fixed surface" ? Scene::fixed_surface : Scene::geometry);
     prm.leave_subsection();
     geometry.parse_parameters(prm);
     output.parse_parameters(prm);
+    if (scene == Scene::fixed_surface)
+      fixed_surface_scene.parse_parameters(prm);
     if (scene == Scene::full)
       {
         time.parse_parameters(prm);
@@ -107,6 +106,8 @@ namespace FluidSurface
         record_geometry_statistics(0, 0.0);
         output.write(geometry, 0.0);
       }
+    else if (scene == Scene::fixed_surface)
+      fixed_surface_scene.run(geometry, output, statistics, pcout);
     else
       run_full_model();
   }

@@ -10,6 +10,7 @@
 #include <fluid_surface/output_writer.h>
 #include <fluid_surface/time_stepper.h>
 #include <fluid_surface/statistics_file.h>
+#include <fluid_surface/surface_flow.h>
 #include <fluid_surface/surface_geometry.h>
 
 #include <string>
@@ -27,7 +28,9 @@ namespace FluidSurface
     /// What a run computes.
     enum class Scene
     {
-      geometry, ///< builds and measures the surface only (no time steps)
+      geometry,      ///< builds and measures the surface only (no time steps)
+      fixed_surface, ///< surface (Navier–)Stokes on a frozen surface
+
       full      ///< the fluid deformable surface of the seed paper
     };
 
@@ -66,6 +69,7 @@ namespace FluidSurface
     TimeStepper            time;
     FluidDeformableSurface model;
     Diagnostics            diagnostics;
+    FixedSurfaceScene      fixed_surface_scene;
     double                 total_energy = 0;
   };
 } // namespace FluidSurface
