@@ -6,6 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <fluid_surface/output_writer.h>
+#include <fluid_surface/simulation.h>
 #include <fluid_surface/statistics_file.h>
 #include <fluid_surface/surface_flow.h>
 #include <fluid_surface/surface_geometry.h>
@@ -25,9 +26,7 @@ namespace FlowTest
   {
     using namespace FluidSurface;
     dealii::ParameterHandler prm;
-    SurfaceGeometry::declare_parameters(prm);
-    OutputWriter::declare_parameters(prm);
-    FixedSurfaceScene::declare_parameters(prm);
+    Simulation::declare_parameters(prm);
     Overrides all = {{"output/write vtu", "false"},
                      {"output/output directory", "flow_test_results"},
                      {"output/overwrite", "true"}};
