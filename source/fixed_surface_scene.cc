@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <fluid_surface/output_writer.h>
 #include <fluid_surface/parameter_file.h>
 #include <fluid_surface/surface_flow.h>
 
@@ -149,23 +150,6 @@ namespace FluidSurface
       return {{d, dd}};
     }
 
-    /// |u| for the VTU files.
-    class SpeedPostprocessor : public DataPostprocessorScalar<3>
-    {
-    public:
-      SpeedPostprocessor()
-        : DataPostprocessorScalar<3>("speed", update_values)
-      {}
-      void
-      evaluate_vector_field(const DataPostprocessorInputs::Vector<3> &inputs,
-                            std::vector<Vector<double>>              &computed) const override
-      {
-        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
-          computed[q](0) = std::sqrt(inputs.solution_values[q](0) * inputs.solution_values[q](0) +
-                                     inputs.solution_values[q](1) * inputs.solution_values[q](1) +
-                                     inputs.solution_values[q](2) * inputs.solution_values[q](2));
-      }
-    };
   } // namespace
 
   void

@@ -11,6 +11,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <fluid_surface/fluid_deformable_surface.h>
+#include <fluid_surface/output_writer.h>
 #include <fluid_surface/parameter_file.h>
 #include <fluid_surface/surface_operators.h>
 
@@ -726,26 +727,6 @@ namespace FluidSurface
     return 2.0 / flow.reynolds_number * Utilities::MPI::sum(rate, geometry.get_communicator());
   }
 
-  namespace
-  {
-    /// |u| from the velocity components.
-    class SpeedPostprocessor : public DataPostprocessorScalar<3>
-    {
-    public:
-      SpeedPostprocessor()
-        : DataPostprocessorScalar<3>("speed", update_values)
-      {}
-      void
-      evaluate_vector_field(const DataPostprocessorInputs::Vector<3> &inputs,
-                            std::vector<Vector<double>>              &computed) const override
-      {
-        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
-          computed[q](0) = std::sqrt(inputs.solution_values[q][0] * inputs.solution_values[q][0] +
-                                     inputs.solution_values[q][1] * inputs.solution_values[q][1] +
-                                     inputs.solution_values[q][2] * inputs.solution_values[q][2]);
-      }
-    };
-  } // namespace
 
   void
   FluidDeformableSurface::add_output_fields(DataOut<2, 3> &data_out) const

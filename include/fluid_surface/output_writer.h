@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
 
 #include <fluid_surface/surface_geometry.h>
 
@@ -13,6 +14,16 @@
 
 namespace FluidSurface
 {
+  /// The speed |u| from the first three components of a field, for the VTU files.
+  class SpeedPostprocessor : public dealii::DataPostprocessorScalar<3>
+  {
+  public:
+    SpeedPostprocessor();
+    void
+    evaluate_vector_field(const dealii::DataPostprocessorInputs::Vector<3> &inputs,
+                          std::vector<dealii::Vector<double>>              &computed) const override;
+  };
+
   /**
    * Files of a run in the output directory: `solution-NNNNN.vtu` with curved
    * cells plus the `solution.pvd` time series for ParaView, and the directory
