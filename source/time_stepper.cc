@@ -38,7 +38,7 @@ namespace FluidSurface
                       Patterns::Integer(1),
                       "Number of consecutive accepted steps before τ grows.");
     prm.declare_entry("energy tolerance",
-                      "1e-4",
+                      "1e-3",
                       Patterns::Double(0),
                       "ε_F: a step is rejected when F(t+τ) > F(t) + (ε_F·τ + 10⁻⁹)·|F(t)|, i.e. when the total energy "
                       "rises faster than the relative rate ε_F (a rate, so that it does not shrink with τ: the "

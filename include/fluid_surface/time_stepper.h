@@ -102,7 +102,7 @@ namespace FluidSurface
     double       growth           = 1.25;
     double       shrink           = 0.5;
     unsigned int easy_steps       = 5;
-    double       energy_tolerance = 1e-4;
+    double       energy_tolerance = 1e-3;
     bool         adaptive         = true;
 
     double       current_time = 0;
