@@ -16,7 +16,7 @@ for r in $refinements; do
   stop=$(date +%s.%N)
   unknowns=$(grep -o '[0-9]* unknowns' $work/r$r.log | cut -d' ' -f1)
   t_reached=$(awk '!/^#/{t=$2} END{print t}' $work/r$r/statistics)
-  get() { grep "^$1:" $work/r$r/summary 2>/dev/null | cut -d' ' -f2- | sed 's/ .*//' ; }
+  get() { grep "^$1:" $work/r$r/summary 2>/dev/null | sed "s/^$1: //; s/ .*//" ; }
   completed=$([ $status -eq 0 ] && echo 1 || echo 0)
   echo "$r,$unknowns,$end,$completed,$t_reached,$(get 'mean angular velocity'),$(get 'final total energy'),$(get 'max area drift'),$(get 'max volume drift'),$(get 'max angular momentum drift'),$(get steps),$(get 'rejected steps'),$(get 'energy rises accepted'),$(echo "$stop - $start" | bc)" >> $here/results.csv
   cp $work/r$r/statistics $here/statistics_r$r 2>/dev/null
