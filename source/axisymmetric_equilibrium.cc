@@ -1,3 +1,4 @@
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -20,33 +21,17 @@ namespace FluidSurface
   {
     constexpr double pi = 3.14159265358979323846;
 
-    /// Gauss–Legendre rule with @p n points on [0, 1] (Newton on P_n).
+    /// Gauss–Legendre rule with @p n points on [0, 1] (deal.II's QGauss).
     void
     gauss_legendre(const unsigned int n, std::vector<double> &x, std::vector<double> &w)
     {
+      const dealii::QGauss<1> rule(n);
       x.resize(n);
       w.resize(n);
       for (unsigned int i = 0; i < n; ++i)
         {
-          double z = std::cos(pi * (i + 0.75) / (n + 0.5));
-          double dp = 1;
-          for (unsigned int it = 0; it < 100; ++it)
-            {
-              double p0 = 1, p1 = z;
-              for (unsigned int k = 2; k <= n; ++k)
-                {
-                  const double p2 = ((2. * k - 1.) * z * p1 - (k - 1.) * p0) / k;
-                  p0              = p1;
-                  p1              = p2;
-                }
-              dp             = n * (z * p1 - p0) / (z * z - 1.);
-              const double dz = p1 / dp;
-              z -= dz;
-              if (std::abs(dz) < 1e-16)
-                break;
-            }
-          x[i] = 0.5 * (1. - z);
-          w[i] = 1. / ((1. - z * z) * dp * dp);
+          x[i] = rule.point(i)[0];
+          w[i] = rule.weight(i);
         }
     }
 

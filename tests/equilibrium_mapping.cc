@@ -1,3 +1,4 @@
+#include <deal.II/base/quadrature_lib.h>
 // Geometry access of the rotating equilibria (v 0.75, Be ω² = 4, A = 4π): the surface X(θ, φ) =
 // map_from_sphere(unit sphere point) integrated by a tensor-product Gauss (θ) × trapezoidal (φ) rule gives
 // area() and volume() (V = ⅓∫X·ν); the polar representation meridian_radius(α) gives the volume
@@ -20,28 +21,13 @@ namespace
   void
   gauss(const unsigned int n, std::vector<double> &x, std::vector<double> &w)
   {
+    const dealii::QGauss<1> rule(n);
     x.resize(n);
     w.resize(n);
     for (unsigned int i = 0; i < n; ++i)
       {
-        double z = std::cos(pi * (i + 0.75) / (n + 0.5)), dp = 1;
-        for (unsigned int it = 0; it < 100; ++it)
-          {
-            double p0 = 1, p1 = z;
-            for (unsigned int k = 2; k <= n; ++k)
-              {
-                const double p2 = ((2. * k - 1.) * z * p1 - (k - 1.) * p0) / k;
-                p0              = p1;
-                p1              = p2;
-              }
-            dp             = n * (z * p1 - p0) / (z * z - 1.);
-            const double d = p1 / dp;
-            z -= d;
-            if (std::abs(d) < 1e-16)
-              break;
-          }
-        x[i] = 0.5 * (1 - z);
-        w[i] = 1 / ((1 - z * z) * dp * dp);
+        x[i] = rule.point(i)[0];
+        w[i] = rule.weight(i);
       }
   }
 
