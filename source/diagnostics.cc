@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 
 namespace FluidSurface
 {
@@ -25,6 +26,18 @@ namespace FluidSurface
                       "5, 10",
                       Patterns::List(Patterns::Double(0), 2, 2),
                       "Time window [t₀, t₁] of the mean angular velocity ⟨ω⟩ in the summary.");
+    prm.declare_entry("reference equilibrium",
+                      "none",
+                      Patterns::Selection("none|prolate|oblate"),
+                      "Branch of the reference shape S_O of the L² distance E(L²) (seed eq. 8): the rotating "
+                      "axisymmetric equilibrium about e with the run's initial area, reduced volume and angular "
+                      "momentum L·e (Be of subsection bending). none: E(L²) is not computed. The summary adds "
+                      "the distance of the final surface to the equilibrium rotating with the measured ⟨ω⟩.");
+    prm.declare_entry("section angles",
+                      "256",
+                      Patterns::Integer(16, 65536),
+                      "Number n of equispaced polar angles φ_j at which the sections of S and S_O are compared "
+                      "in E(L²) (trapezoidal rule).");
     prm.leave_subsection();
   }
 
@@ -45,7 +58,272 @@ namespace FluidSurface
       throw_invalid_entry("diagnostics/angular velocity window",
                           prm.get("angular velocity window"),
                           "t₀ < t₁");
+    reference_branch = prm.get("reference equilibrium");
+    n_section_angles = prm.get_integer("section angles");
     prm.leave_subsection();
+  }
+
+  namespace
+  {
+    /// x(ξ) and ∂x/∂ξ of the position field on one cell, from its local DoF values.
+    struct CellMap
+    {
+      const FiniteElement<2, 3> &fe;
+      Vector<double>             X;
+
+      Point<3>
+      value(const Point<2> &xi) const
+      {
+        Point<3> x;
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          x[fe.system_to_component_index(i).first] += X(i) * fe.shape_value(i, xi);
+        return x;
+      }
+      Tensor<2, 3>
+      jacobian(const Point<2> &xi) const ///< columns 0, 1: ∂x/∂ξ₁, ∂x/∂ξ₂
+      {
+        Tensor<2, 3> J;
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          {
+            const Tensor<1, 2> g = fe.shape_grad(i, xi);
+            for (unsigned int a = 0; a < 2; ++a)
+              J[fe.system_to_component_index(i).first][a] += X(i) * g[a];
+          }
+        return J;
+      }
+    };
+
+    /// A piece of the piecewise linear section in one cell: end points in reference and plane coordinates.
+    struct Segment
+    {
+      Point<2> xi[2];
+      Point<2> p[2];
+    };
+  } // namespace
+
+  std::vector<double>
+  section_polar_radius(const SurfaceGeometry &geometry,
+                       const Point<3>        &centre,
+                       const Tensor<1, 3>    &e1,
+                       const Tensor<1, 3>    &e2,
+                       const unsigned int     n_angles)
+  {
+    const Tensor<1, 3>  n = cross_product_3d(e1, e2);
+    const unsigned int  m = 4; // sub-grid of the starting guesses, m × m squares per cell
+    std::vector<double> radius(n_angles, -1.0);
+    CellMap             map{geometry.fe(), Vector<double>(geometry.fe().n_dofs_per_cell())};
+
+    for (const auto &cell : geometry.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_values(geometry.position(), map.X);
+          // Cells whose nodes lie clearly on one side of the plane are skipped (the margin covers the bulge
+          // of a curved cell beyond its nodes).
+          // A Lagrange position field: the nodes are the DoF values.
+          std::vector<Point<3>> nodes(map.fe.base_element(0).n_dofs_per_cell());
+          for (unsigned int i = 0; i < map.fe.n_dofs_per_cell(); ++i)
+            nodes[map.fe.system_to_component_index(i).second][map.fe.system_to_component_index(i).first] = map.X(i);
+          double d_min = 1e300, d_max = -1e300, size = 0;
+          for (const Point<3> &x : nodes)
+            {
+              const double d = (x - centre) * n;
+              d_min          = std::min(d_min, d);
+              d_max          = std::max(d_max, d);
+              size           = std::max(size, x.distance(nodes[0]));
+            }
+          const double margin = 0.1 * size;
+          if (d_min > margin || d_max < -margin)
+            continue;
+
+          Point<2> xi[m + 1][m + 1];
+          Point<2> plane[m + 1][m + 1];
+          double   dist[m + 1][m + 1];
+          for (unsigned int a = 0; a <= m; ++a)
+            for (unsigned int b = 0; b <= m; ++b)
+              {
+                xi[a][b]             = Point<2>(double(a) / m, double(b) / m);
+                const Tensor<1, 3> x = map.value(xi[a][b]) - centre;
+                plane[a][b]          = Point<2>(x * e1, x * e2);
+                dist[a][b]           = x * n;
+              }
+          std::vector<Segment> segments;
+          const unsigned int   triangles[2][3][2] = {{{0, 0}, {1, 0}, {1, 1}}, {{0, 0}, {1, 1}, {0, 1}}};
+          for (unsigned int a = 0; a < m; ++a)
+            for (unsigned int b = 0; b < m; ++b)
+              for (const auto &t : triangles)
+                {
+                  Segment      s;
+                  unsigned int n_crossings = 0;
+                  for (unsigned int e = 0; e < 3; ++e)
+                    {
+                      const unsigned int a0 = a + t[e][0], b0 = b + t[e][1];
+                      const unsigned int a1 = a + t[(e + 1) % 3][0], b1 = b + t[(e + 1) % 3][1];
+                      const double       d0 = dist[a0][b0], d1 = dist[a1][b1];
+                      if ((d0 >= 0) == (d1 >= 0) || n_crossings == 2)
+                        continue;
+                      const double w     = d0 / (d0 - d1);
+                      s.xi[n_crossings]  = xi[a0][b0] + w * (xi[a1][b1] - xi[a0][b0]);
+                      s.p[n_crossings]   = plane[a0][b0] + w * (plane[a1][b1] - plane[a0][b0]);
+                      ++n_crossings;
+                    }
+                  if (n_crossings == 2)
+                    segments.push_back(s);
+                }
+          if (segments.empty())
+            continue;
+
+          for (unsigned int j = 0; j < n_angles; ++j)
+            {
+              const double       phi = 2 * numbers::PI * j / n_angles;
+              const Tensor<1, 2> dir({std::cos(phi), std::sin(phi)});
+              const Tensor<1, 3> ray    = std::cos(phi) * e1 + std::sin(phi) * e2;
+              const Tensor<1, 3> across = -std::sin(phi) * e1 + std::cos(phi) * e2;
+              for (const Segment &s : segments)
+                {
+                  // s·dir = p0 + w (p1 − p0) by Cramer's rule.
+                  const Tensor<1, 2> D   = s.p[1] - s.p[0];
+                  const double       det = -dir[0] * D[1] + D[0] * dir[1];
+                  if (std::abs(det) < 1e-14 * (D.norm() + 1e-300))
+                    continue;
+                  const double w = (dir[0] * s.p[0][1] - dir[1] * s.p[0][0]) / det;
+                  const double r = (s.p[0][0] * (-D[1]) + D[0] * s.p[0][1]) / det;
+                  if (w < -0.5 || w > 1.5 || r <= 0)
+                    continue;
+                  // Newton for (x(ξ) − c)·n = 0, (x(ξ) − c)·across = 0.
+                  Point<2> z = s.xi[0] + std::clamp(w, 0.0, 1.0) * (s.xi[1] - s.xi[0]);
+                  bool     converged = false;
+                  for (unsigned int it = 0; it < 20 && !converged; ++it)
+                    {
+                      const Tensor<1, 3> x = map.value(z) - centre;
+                      const Tensor<2, 3> J = map.jacobian(z);
+                      const double       g0 = x * n, g1 = x * across;
+                      double             A[2][2];
+                      for (unsigned int a = 0; a < 2; ++a)
+                        {
+                          A[0][a] = n[0] * J[0][a] + n[1] * J[1][a] + n[2] * J[2][a];
+                          A[1][a] = across[0] * J[0][a] + across[1] * J[1][a] + across[2] * J[2][a];
+                        }
+                      const double detA = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+                      if (detA == 0)
+                        break;
+                      const Point<2> dz((A[1][1] * g0 - A[0][1] * g1) / detA, (-A[1][0] * g0 + A[0][0] * g1) / detA);
+                      z -= dz;
+                      converged = dz.norm() < 1e-12;
+                      if (z.norm() > 3)
+                        break;
+                    }
+                  // A point a hair outside the cell (the polynomial map extends smoothly) is kept: near a
+                  // cell edge the neighbour's short sub-segment may miss the ray.
+                  const double slack = 1e-3;
+                  if (!converged || z[0] < -slack || z[0] > 1 + slack || z[1] < -slack || z[1] > 1 + slack)
+                    continue;
+                  const double distance = (map.value(z) - centre) * ray;
+                  if (distance > 0)
+                    radius[j] = std::max(radius[j], distance);
+                }
+            }
+        }
+    Utilities::MPI::max(radius, geometry.get_communicator(), radius);
+    for (double &r : radius)
+      if (r < 0)
+        r = std::numeric_limits<double>::quiet_NaN();
+    return radius;
+  }
+
+  double
+  polar_l2_distance(const std::vector<double> &r_E, const std::function<double(double)> &r_O)
+  {
+    double sum = 0;
+    for (unsigned int j = 0; j < r_E.size(); ++j)
+      {
+        const double d = r_O(2 * numbers::PI * j / r_E.size()) - r_E[j];
+        sum += d * d;
+      }
+    return std::sqrt(sum * 2 * numbers::PI / r_E.size());
+  }
+
+  std::pair<double, double>
+  Diagnostics::l2_distance(const SurfaceGeometry &geometry, const AxisymmetricEquilibrium &shape) const
+  {
+    // e⊥: the unit vector normal to e closest to x (or y when e ∥ x).
+    Tensor<1, 3> normal_direction({1., 0., 0.});
+    if (std::abs(axis * normal_direction) > 0.9)
+      normal_direction = Tensor<1, 3>({0., 1., 0.});
+    normal_direction -= (normal_direction * axis) * axis;
+    normal_direction /= normal_direction.norm();
+    const Point<3> c(geometry.measure().centre_of_mass);
+    // Axial section: φ is the polar angle from e towards e⊥, as in meridian_radius().
+    const double axial = polar_l2_distance(section_polar_radius(geometry, c, axis, normal_direction, n_section_angles),
+                                           [&](const double phi) { return shape.meridian_radius(phi); });
+    const double equatorial =
+      polar_l2_distance(section_polar_radius(geometry, c, normal_direction, cross_product_3d(axis, normal_direction),
+                                             n_section_angles),
+                        [&](const double) { return shape.equatorial_radius(); });
+    return {axial, equatorial};
+  }
+
+  void
+  Diagnostics::set_reference(const Values &initial_values, const double bending_number, std::ostream &out)
+  {
+    reference_shape.reset();
+    if (reference_branch == "none")
+      return;
+    AxisymmetricEquilibrium::Parameters p;
+    p.area           = initial_values.area;
+    p.reduced_volume = initial_values.reduced_volume;
+    p.branch         = (reference_branch == "oblate" ? AxisymmetricEquilibrium::Branch::oblate :
+                                                       AxisymmetricEquilibrium::Branch::prolate);
+    p.bending_number = bending_number;
+    p.prescribed     = AxisymmetricEquilibrium::Prescribed::angular_momentum;
+    p.L              = initial_values.angular_momentum * axis;
+    reference_shape  = std::make_unique<AxisymmetricEquilibrium>(p);
+    try
+      {
+        reference_shape->solve();
+      }
+    catch (const std::exception &exc)
+      {
+        throw InputError(parameter_file_name() + ": diagnostics/reference equilibrium = " + reference_branch +
+                         ": no rotating equilibrium with the run's area " + std::to_string(p.area) +
+                         ", reduced volume " + std::to_string(p.reduced_volume) + " and angular momentum " +
+                         std::to_string(p.L) + " (" + exc.what() + "); expected a branch that exists, or none.");
+      }
+    out << "   E(L2) reference: " << reference_branch << " equilibrium at L = " << std::setprecision(8) << p.L
+        << ": ω = " << reference_shape->angular_velocity() << ", F_bend = " << reference_shape->bending_energy()
+        << ", I_zz = " << reference_shape->inertia_zz() << std::endl;
+  }
+
+  void
+  Diagnostics::compare_with_mean_rotation(const SurfaceGeometry &geometry)
+  {
+    if (!reference_shape)
+      return;
+    std::ostringstream text;
+    text << std::setprecision(10);
+    if (!(omega_time > 0))
+      {
+        text << "L2 distance to equilibrium at mean angular velocity: n/a (the run did not reach the window)\n";
+        mean_rotation_comparison = text.str();
+        return;
+      }
+    AxisymmetricEquilibrium::Parameters p = reference_shape->parameters();
+    p.prescribed                          = AxisymmetricEquilibrium::Prescribed::angular_velocity;
+    p.omega                               = omega_integral / omega_time;
+    AxisymmetricEquilibrium shape(p);
+    try
+      {
+        shape.solve();
+        const auto d = l2_distance(geometry, shape);
+        text << "mean-rotation equilibrium bending energy: " << shape.bending_energy() << '\n'
+             << "mean-rotation equilibrium inertia zz: " << shape.inertia_zz() << '\n'
+             << "mean-rotation equilibrium angular momentum: " << shape.angular_momentum() << '\n'
+             << "L2 distance to equilibrium at mean angular velocity: " << std::hypot(d.first, d.second) << '\n';
+      }
+    catch (const std::exception &exc)
+      {
+        text << "L2 distance to equilibrium at mean angular velocity: n/a (" << exc.what() << ")\n";
+      }
+    mean_rotation_comparison = text.str();
   }
 
   Diagnostics::Values
@@ -133,6 +411,13 @@ namespace FluidSurface
                                       180.0 / numbers::PI :
                                     0.0;
     v.rigid_fraction = v.kinetic_energy > 0 ? 0.5 * (v.rotation_vector * v.angular_momentum) / v.kinetic_energy : 0.0;
+    if (reference_shape)
+      {
+        const auto d             = l2_distance(geometry, *reference_shape);
+        v.l2_distance_axial      = d.first;
+        v.l2_distance_equatorial = d.second;
+        v.l2_distance            = std::hypot(d.first, d.second);
+      }
     return v;
   }
 
@@ -154,6 +439,11 @@ namespace FluidSurface
       crossing_1e4 = time;
     if (std::isnan(crossing_1e2) && v.symmetry_deviation > 1e-2)
       crossing_1e2 = time;
+    if (reference_shape && std::isfinite(v.l2_distance) && !(v.l2_distance >= min_l2_distance))
+      {
+        min_l2_distance = v.l2_distance;
+        min_l2_time     = time;
+      }
     // ⟨ω⟩ by the rectangle rule over the steps ending inside the window.
     if (tau > 0 && time > window_begin && time - tau < window_end)
       {
@@ -186,6 +476,12 @@ namespace FluidSurface
     statistics.add_value("symmetry deviation", v.symmetry_deviation);
     statistics.add_value("max normal velocity", v.max_normal_velocity);
     statistics.add_value("mesh quality", v.mesh_quality);
+    if (reference_shape)
+      {
+        statistics.add_value("L2 distance to equilibrium", v.l2_distance);
+        statistics.add_value("L2 distance axial section", v.l2_distance_axial);
+        statistics.add_value("L2 distance equatorial section", v.l2_distance_equatorial);
+      }
   }
 
   void
@@ -211,5 +507,12 @@ namespace FluidSurface
         << "steps: " << steps << '\n'
         << "rejected steps: " << rejected_steps << '\n'
         << "wall time: " << wall_time << '\n';
+    if (reference_shape)
+      out << "reference equilibrium angular velocity: " << reference_shape->angular_velocity() << '\n'
+          << "reference equilibrium bending energy: " << reference_shape->bending_energy() << '\n'
+          << "reference equilibrium inertia zz: " << reference_shape->inertia_zz() << '\n'
+          << "min L2 distance to equilibrium: " << min_l2_distance << '\n'
+          << "time of min L2 distance: " << min_l2_time << '\n'
+          << mean_rotation_comparison;
   }
 } // namespace FluidSurface

@@ -116,6 +116,12 @@ namespace FluidSurface
                       "0",
                       Patterns::Double(),
                       "ω₀ of the initial rigid rotation u₀ = ω₀ e × (x − c).");
+    prm.declare_entry("equilibrium rotation",
+                      "false",
+                      Patterns::Bool(),
+                      "With geometry/shape = equilibrium: ω₀ is the equilibrium's angular velocity ω (the entry "
+                      "angular velocity is ignored), so that u₀ = ω e × (x − c) with the default e = z, c = 0 "
+                      "is the equilibrium's rigid rotation.");
     prm.declare_entry("rotation axis", "0, 0, 1", Patterns::List(Patterns::Double(), 3, 3), "Axis e (normalized).");
     prm.declare_entry("rotation centre", "0, 0, 0", Patterns::List(Patterns::Double(), 3, 3), "Centre c.");
     prm.declare_entry("translation velocity",
@@ -150,6 +156,11 @@ namespace FluidSurface
     prm.leave_subsection();
     prm.enter_subsection("initial state");
     initial_angular_velocity = prm.get_double("angular velocity");
+    equilibrium_rotation = prm.get_bool("equilibrium rotation");
+    if (equilibrium_rotation && geometry.equilibrium_shape() == nullptr)
+      throw_invalid_entry("initial state/equilibrium rotation",
+                          "true",
+                          "false unless geometry/shape = equilibrium (there is no equilibrium to take ω from)");
     const auto axis          = Utilities::split_string_list(prm.get("rotation axis"));
     const auto centre        = Utilities::split_string_list(prm.get("rotation centre"));
     for (unsigned int d = 0; d < 3; ++d)
@@ -260,6 +271,8 @@ namespace FluidSurface
           return Point<3>(x + shape_noise * field(x) * radial / radial.norm());
         });
       }
+    if (equilibrium_rotation)
+      initial_angular_velocity = geometry.equilibrium_shape()->angular_velocity();
     setup_dofs();
     set_initial_velocity();
     const SurfaceGeometry::Measures m = geometry.measure();

@@ -150,6 +150,10 @@ namespace FluidSurface
               << "  ΔV/V = " << diagnostics.max_volume_drift()
               << "  ΔL/L = " << diagnostics.max_angular_momentum_drift() << "  e(λ) = " << v.symmetry_deviation
               << "  mesh quality " << std::fixed << v.mesh_quality << std::defaultfloat << '\n';
+        if (diagnostics.reference() != nullptr)
+          pcout << std::setprecision(3) << std::scientific << "    E(L2) = " << v.l2_distance << " (axial "
+                << v.l2_distance_axial << ", equatorial " << v.l2_distance_equatorial << ")" << std::defaultfloat
+                << '\n';
         if (output.report_wall_time())
           pcout << "    " << std::setprecision(3) << per_step << " s/step, ETA " << static_cast<long>(eta) << " s\n";
         pcout << std::flush;
@@ -161,6 +165,13 @@ namespace FluidSurface
   {
     model.setup();
     pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ" << std::endl;
+    {
+      std::ostringstream report;
+      diagnostics.set_reference(diagnostics.evaluate(geometry, model.dof_handler(), model.solution()),
+                                model.bending_number(),
+                                report);
+      pcout << report.str() << std::flush;
+    }
     double willmore = geometry.compute_curvature();
     record_full_model_step(0.0, willmore, FluidDeformableSurface::StepResult());
     output.write(geometry, time.time(), [&](DataOut<2, 3> &data_out) { model.add_output_fields(data_out); });
@@ -223,6 +234,7 @@ namespace FluidSurface
           output.write(geometry, time.time(), [&](DataOut<2, 3> &data_out) { model.add_output_fields(data_out); });
       }
 
+    diagnostics.compare_with_mean_rotation(geometry);
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
         std::ofstream summary(output.directory() + "summary");

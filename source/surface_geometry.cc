@@ -39,9 +39,12 @@ namespace FluidSurface
     prm.enter_subsection("geometry");
     prm.declare_entry("shape",
                       "ellipsoid",
-                      Patterns::Selection("sphere|ellipsoid|mesh file"),
+                      Patterns::Selection("sphere|ellipsoid|mesh file|equilibrium"),
                       "Initial shape of the closed surface S: a sphere of radius R, an ellipsoid with "
-                      "semi-axes (a, b, c) along x, y, z (c > a: prolate, c < a: oblate), or a gmsh mesh.");
+                      "semi-axes (a, b, c) along x, y, z (c > a: prolate, c < a: oblate), a gmsh mesh, or "
+                      "the rotating axisymmetric equilibrium of subsection equilibrium (axis z; the nodes of "
+                      "the refined cube sphere are placed on the exact generating curve, polar angle θ ↦ "
+                      "arc length s = 2S θ/π).");
     prm.declare_entry("radius",
                       "1",
                       Patterns::Double(0, Patterns::Double::max_double_value),
@@ -69,6 +72,8 @@ namespace FluidSurface
                       Patterns::Integer(1, 3),
                       "Polynomial degree k of the position field X ∈ [Q_k]³ that defines the geometry.");
     prm.leave_subsection();
+    // The equilibrium shape's inputs (read only for shape = equilibrium).
+    AxisymmetricEquilibrium::declare_parameters(prm);
   }
 
   void
@@ -76,7 +81,10 @@ namespace FluidSurface
   {
     prm.enter_subsection("geometry");
     const std::string s = prm.get("shape");
-    shape  = (s == "sphere" ? Shape::sphere : s == "ellipsoid" ? Shape::ellipsoid : Shape::mesh_file);
+    shape  = (s == "sphere"      ? Shape::sphere :
+              s == "ellipsoid"   ? Shape::ellipsoid :
+              s == "equilibrium" ? Shape::equilibrium :
+                                   Shape::mesh_file);
     radius = prm.get_double("radius");
     const std::vector<std::string> axes =
       Utilities::split_string_list(prm.get("semi-axes"));
@@ -99,6 +107,12 @@ namespace FluidSurface
           throw_invalid_entry("geometry/mesh file", mesh_file, "a readable gmsh mesh file");
       }
     prm.leave_subsection();
+    equilibrium.reset();
+    if (shape == Shape::equilibrium)
+      {
+        equilibrium = std::make_unique<AxisymmetricEquilibrium>();
+        equilibrium->parse_parameters(prm);
+      }
   }
 
   std::string
@@ -107,6 +121,10 @@ namespace FluidSurface
     std::ostringstream out;
     if (shape == Shape::sphere)
       out << "sphere R = " << radius;
+    else if (shape == Shape::equilibrium)
+      out << (equilibrium->parameters().branch == AxisymmetricEquilibrium::Branch::prolate ? "prolate" : "oblate")
+          << " rotating equilibrium, A = " << equilibrium->parameters().area
+          << ", v = " << equilibrium->parameters().reduced_volume;
     else
       {
         if (shape == Shape::mesh_file)
@@ -180,6 +198,20 @@ namespace FluidSurface
         const Point<3> u = x / x.norm();
         return Point<3>(semi_axes[0] * u[0], semi_axes[1] * u[1], semi_axes[2] * u[2]);
       });
+    else if (shape == Shape::equilibrium)
+      {
+        try
+          {
+            equilibrium->solve();
+          }
+        catch (const std::exception &exc)
+          {
+            throw InputError(parameter_file_name() + ": subsection equilibrium: no equilibrium shape found (" +
+                             exc.what() + "); expected area, reduced volume, branch and rotation of an "
+                             "existing up-down symmetric rotating equilibrium.");
+          }
+        transform_nodes([this](const Point<3> &x) { return equilibrium->map_from_sphere(Point<3>(x / x.norm())); });
+      }
     else if (project_onto_ellipsoid)
       transform_nodes([this](const Point<3> &x) {
         double s = 0;

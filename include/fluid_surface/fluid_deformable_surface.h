@@ -154,6 +154,13 @@ namespace FluidSurface
       return bending.enabled ? willmore_energy / bending.bending_number : 0.0;
     }
 
+    /// Be of the bending force.
+    double
+    bending_number() const
+    {
+      return bending.bending_number;
+    }
+
     const dealii::DoFHandler<2, 3> &
     dof_handler() const
     {
@@ -216,6 +223,7 @@ namespace FluidSurface
     // Initial velocity: translation U plus rigid rotation ω e × (x − c) plus seeded noise.
     dealii::Tensor<1, 3> translation_velocity;
     double               initial_angular_velocity = 0;
+    bool                 equilibrium_rotation     = false; ///< ω₀ from the geometry's equilibrium shape
     dealii::Tensor<1, 3> rotation_axis;
     dealii::Point<3>     rotation_centre;
     double               velocity_noise   = 0;

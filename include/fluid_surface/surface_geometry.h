@@ -12,6 +12,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fluid_surface/axisymmetric_equilibrium.h>
+
 #include <functional>
 #include <memory>
 #include <string>
@@ -41,7 +43,8 @@ namespace FluidSurface
     {
       sphere,
       ellipsoid,
-      mesh_file
+      mesh_file,
+      equilibrium ///< a rotating axisymmetric equilibrium of `subsection equilibrium`
     };
 
     /// Integral measures of the surface.
@@ -167,6 +170,16 @@ namespace FluidSurface
       return mean_curvature_ghosted;
     }
 
+    /**
+     * The rotating axisymmetric equilibrium the initial surface was mapped onto (shape = equilibrium), or
+     * nullptr. Its axis is z through the origin.
+     */
+    const AxisymmetricEquilibrium *
+    equilibrium_shape() const
+    {
+      return equilibrium.get();
+    }
+
     /// A short description of the shape for the screen ("ellipsoid [0.61, 0.61, 2.02]").
     std::string
     description() const;
@@ -188,6 +201,7 @@ namespace FluidSurface
     bool                   project_onto_ellipsoid = true;
     unsigned int           refinement             = 3;
     unsigned int           position_degree        = 2;
+    std::unique_ptr<AxisymmetricEquilibrium> equilibrium;
 
     dealii::parallel::distributed::Triangulation<2, 3> tria;
     std::unique_ptr<dealii::FESystem<2, 3>>           position_fe;

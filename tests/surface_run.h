@@ -1,0 +1,51 @@
+// A surface, its flow model and diagnostics built from the default parameters with a chosen shape
+// (shared by the diagnostics and equilibrium tests). The equilibrium is the prolate or oblate rotating
+// shape with A = 4π, v = 0.75 and ω = 2.
+#ifndef fluid_surface_tests_surface_run_h
+#define fluid_surface_tests_surface_run_h
+
+#include <fluid_surface/diagnostics.h>
+#include <fluid_surface/fluid_deformable_surface.h>
+#include <fluid_surface/simulation.h>
+
+#include <string>
+
+namespace FluidSurface
+{
+  struct SurfaceRun
+  {
+    dealii::ParameterHandler prm;
+    SurfaceGeometry          geometry{MPI_COMM_WORLD};
+    FluidDeformableSurface   model{geometry};
+    Diagnostics              diagnostics;
+
+    SurfaceRun(const std::string &shape,
+              const std::string &semi_axes,
+              const unsigned int refinement,
+              const std::string &branch               = "prolate",
+              const bool         equilibrium_rotation = false)
+    {
+      Simulation::declare_parameters(prm);
+      prm.enter_subsection("geometry");
+      prm.set("shape", shape);
+      prm.set("semi-axes", semi_axes);
+      prm.set("refinement", std::to_string(refinement));
+      prm.leave_subsection();
+      prm.enter_subsection("equilibrium");
+      prm.set("angular velocity", "2");
+      prm.set("branch", branch);
+      prm.leave_subsection();
+      prm.enter_subsection("initial state");
+      prm.set("equilibrium rotation", equilibrium_rotation ? "true" : "false");
+      prm.leave_subsection();
+      geometry.parse_parameters(prm);
+      geometry.create();
+      model.parse_parameters(prm);
+      model.setup();
+      diagnostics.parse_parameters(prm);
+    }
+  };
+
+} // namespace FluidSurface
+
+#endif
