@@ -231,19 +231,38 @@ namespace FluidSurface
   }
 
   double
-  polar_l2_distance(const std::vector<double> &r_E, const std::function<double(double)> &r_O)
+  polar_l2_distance(const std::vector<double> &r_E, const std::vector<double> &r_O)
   {
+    AssertDimension(r_E.size(), r_O.size());
     double sum = 0;
     for (unsigned int j = 0; j < r_E.size(); ++j)
-      {
-        const double d = r_O(2 * numbers::PI * j / r_E.size()) - r_E[j];
-        sum += d * d;
-      }
+      sum += (r_O[j] - r_E[j]) * (r_O[j] - r_E[j]);
     return std::sqrt(sum * 2 * numbers::PI / r_E.size());
   }
 
+  namespace
+  {
+    /// r_O(φ_j) = meridian_radius(φ_j), φ_j = 2πj/n.
+    std::vector<double>
+    meridian_radii(const AxisymmetricEquilibrium &shape, const unsigned int n)
+    {
+      std::vector<double> r(n);
+      for (unsigned int j = 0; j < n; ++j)
+        r[j] = shape.meridian_radius(2 * numbers::PI * j / n);
+      return r;
+    }
+  } // namespace
+
   std::pair<double, double>
   Diagnostics::l2_distance(const SurfaceGeometry &geometry, const AxisymmetricEquilibrium &shape) const
+  {
+    return l2_distance(geometry, meridian_radii(shape, n_section_angles), shape.equatorial_radius());
+  }
+
+  std::pair<double, double>
+  Diagnostics::l2_distance(const SurfaceGeometry     &geometry,
+                           const std::vector<double> &meridian,
+                           const double               equator) const
   {
     // e⊥: the unit vector normal to e closest to x (or y when e ∥ x).
     Tensor<1, 3> normal_direction({1., 0., 0.});
@@ -253,12 +272,12 @@ namespace FluidSurface
     normal_direction /= normal_direction.norm();
     const Point<3> c(geometry.measure().centre_of_mass);
     // Axial section: φ is the polar angle from e towards e⊥, as in meridian_radius().
-    const double axial = polar_l2_distance(section_polar_radius(geometry, c, axis, normal_direction, n_section_angles),
-                                           [&](const double phi) { return shape.meridian_radius(phi); });
+    const double axial =
+      polar_l2_distance(section_polar_radius(geometry, c, axis, normal_direction, n_section_angles), meridian);
     const double equatorial =
       polar_l2_distance(section_polar_radius(geometry, c, normal_direction, cross_product_3d(axis, normal_direction),
                                              n_section_angles),
-                        [&](const double) { return shape.equatorial_radius(); });
+                        std::vector<double>(n_section_angles, equator));
     return {axial, equatorial};
   }
 
@@ -288,6 +307,7 @@ namespace FluidSurface
                          ", reduced volume " + std::to_string(p.reduced_volume) + " and angular momentum " +
                          std::to_string(p.L) + " (" + exc.what() + "); expected a branch that exists, or none.");
       }
+    reference_meridian = meridian_radii(*reference_shape, n_section_angles);
     out << "   E(L2) reference: " << reference_branch << " equilibrium at L = " << std::setprecision(8) << p.L
         << ": ω = " << reference_shape->angular_velocity() << ", F_bend = " << reference_shape->bending_energy()
         << ", I_zz = " << reference_shape->inertia_zz() << std::endl;
@@ -413,7 +433,7 @@ namespace FluidSurface
     v.rigid_fraction = v.kinetic_energy > 0 ? 0.5 * (v.rotation_vector * v.angular_momentum) / v.kinetic_energy : 0.0;
     if (reference_shape)
       {
-        const auto d             = l2_distance(geometry, *reference_shape);
+        const auto d = l2_distance(geometry, reference_meridian, reference_shape->equatorial_radius());
         v.l2_distance_axial      = d.first;
         v.l2_distance_equatorial = d.second;
         v.l2_distance            = std::hypot(d.first, d.second);

@@ -61,7 +61,7 @@ main(int argc, char **argv)
         max_error = std::max(max_error, std::abs(rho - 1));
       for (const double rho : equatorial)
         max_error = std::max(max_error, std::abs(rho - 1));
-      const auto sphere = [](const double) { return 1.1; };
+      const std::vector<double> sphere(256, 1.1);
       std::printf("  refinement %u: E axial %.6f  E equatorial %.6f  max |r_h - 1| %.1e\n", r,
                   polar_l2_distance(axial, sphere), polar_l2_distance(equatorial, sphere), max_error);
     }

@@ -34,10 +34,10 @@ namespace FluidSurface
 
   /**
    * E(L²) = (∫₀^{2π} |r_O(φ) − r_E(φ)|² dφ)^{1/2} (seed eq. 8) by the trapezoidal rule on the angles
-   * φ_j = 2πj/n of @p r_E (spectrally accurate for smooth periodic curves).
+   * φ_j = 2πj/n of @p r_E and @p r_O (spectrally accurate for smooth periodic curves).
    */
   double
-  polar_l2_distance(const std::vector<double> &r_E, const std::function<double(double)> &r_O);
+  polar_l2_distance(const std::vector<double> &r_E, const std::vector<double> &r_O);
 
   /**
    * The seed paper's measures of a rotating surface (its section 3.1) and the
@@ -73,6 +73,10 @@ namespace FluidSurface
     /// @p shape: {axial, equatorial}.
     std::pair<double, double>
     l2_distance(const SurfaceGeometry &geometry, const AxisymmetricEquilibrium &shape) const;
+
+    /// The same for a reference given by its meridian radii r_O(φ_j) (φ from the axis) and its equator radius.
+    std::pair<double, double>
+    l2_distance(const SurfaceGeometry &geometry, const std::vector<double> &meridian, const double equator) const;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -154,6 +158,7 @@ namespace FluidSurface
     std::string  reference_branch = "none"; ///< `reference equilibrium`
     unsigned int n_section_angles = 256;    ///< n of section_polar_radius
     std::unique_ptr<AxisymmetricEquilibrium> reference_shape;
+    std::vector<double> reference_meridian; ///< r_O(φ_j) of reference_shape's meridian section
     double       min_l2_distance = std::numeric_limits<double>::quiet_NaN(), min_l2_time = 0;
     /// From compare_with_mean_rotation(): ⟨ω⟩-equilibrium bending energy, I_zz, and the final E(L²) to it.
     std::string  mean_rotation_comparison;
