@@ -15,6 +15,8 @@
 
 namespace FluidSurface
 {
+  class CheckpointData;
+
   /**
    * The seed paper's measures of a rotating surface (its section 3.1) and the
    * conservation checks, from the surface S and the velocity u:
@@ -83,6 +85,12 @@ namespace FluidSurface
     {
       return angular_momentum_drift;
     }
+
+    /// Writes the reference values, running drifts, crossing times and the ω integral into a checkpoint.
+    void
+    save(CheckpointData &data) const;
+    void
+    load(const CheckpointData &data);
 
   private:
     dealii::Tensor<1, 3> axis;
