@@ -562,8 +562,9 @@ namespace FluidSurface
     chosen = Utilities::MPI::broadcast(communicator, chosen, 0);
     report = Utilities::MPI::broadcast(communicator, report, 0);
     if (chosen.empty() && resume == Resume::yes)
-      throw InputError(parameter_file_name() + ": entry 'checkpoint/resume' = 'true': " + report +
-                       "; expected a checkpoint written by an earlier run, or resume = auto|false.");
+      throw_invalid_entry("checkpoint/resume",
+                          "true",
+                          "a usable checkpoint of an earlier run (found: " + report + "), or resume = auto|false");
     if (!report.empty() && Utilities::MPI::this_mpi_process(communicator) == 0)
       log << "-- " << report << (chosen.empty() ? "; starting a new run" : "") << std::endl;
     current_slot = chosen;

@@ -183,7 +183,8 @@ namespace FluidSurface
       {
         const CheckpointData data = checkpoint.read();
         if (data.get_string("simulation/geometry") != geometry.description())
-          throw InputError(parameter_file_name() + ": the checkpoint " + checkpoint.last_slot() +
+          throw InputError((parameter_file_name().empty() ? std::string("parameters") : parameter_file_name()) +
+                           ": the checkpoint " + checkpoint.last_slot() +
                            " was written for the geometry '" + data.get_string("simulation/geometry") +
                            "', the parameter file describes '" + geometry.description() +
                            "'; expected the geometry of the run to resume, or resume = false.");
