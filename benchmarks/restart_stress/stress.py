@@ -1,0 +1,159 @@
+"""Kills a fluid_surface run with SIGKILL at random moments, resumes it, and compares the results."""
+import argparse, csv, glob, os, random, shutil, signal, subprocess, sys, tempfile, time
+
+here = os.path.dirname(os.path.abspath(__file__))
+parser = argparse.ArgumentParser()
+parser.add_argument("--quick", action="store_true", help="5 trials")
+parser.add_argument("--trials", type=int, default=25)
+parser.add_argument("--kills", type=int, default=4, help="SIGKILLs per trial (at most; a run may finish first)")
+parser.add_argument("--np", type=int, default=1, help="MPI ranks (mpirun when > 1)")
+parser.add_argument("--seed", type=int, default=2026)
+parser.add_argument("--exe", default=os.environ.get("FLUID_SURFACE", "./build/fluid_surface"))
+args = parser.parse_args()
+if args.quick:
+    args.trials = 5
+random.seed(args.seed)
+
+PRM = """subsection model
+  set scene = full
+end
+subsection geometry
+  set shape = ellipsoid
+  set semi-axes = 0.61, 0.61, 2.02
+  set refinement = 2
+end
+subsection initial state
+  set angular velocity = 4
+end
+subsection time stepping
+  set end time = 0.15
+  set time step = 0.01
+end
+subsection output
+  set output directory = {directory}
+  set overwrite = true
+  set write vtu = true
+  set output interval = 0.03
+  set subdivisions = 1
+  set report wall time = false
+end
+subsection checkpoint
+  set steps between checkpoints = 1
+  set wall time between checkpoints = 0
+  set resume = auto
+end
+"""
+
+work = tempfile.mkdtemp(prefix="restart_stress_")
+command = ([] if args.np == 1 else ["mpirun", "--allow-run-as-root", "-np", str(args.np)]) + [args.exe]
+
+
+def prm_for(directory):
+    path = os.path.join(work, os.path.basename(directory) + ".prm")
+    with open(path, "w") as f:
+        f.write(PRM.format(directory=directory))
+    return path
+
+
+def without_wall_time(path):
+    """Lines of statistics/summary/pvd with the wall-time column or line removed."""
+    if not os.path.exists(path):
+        return None
+    lines, wall = [], None
+    for line in open(path):
+        line = line.rstrip("\n")
+        if line.startswith("wall time:"):
+            continue
+        if line.startswith("# "):
+            if line.endswith(": wall time"):
+                wall = len([l for l in lines if l.startswith("# ")])
+            lines.append(line)
+        elif wall is not None and line.strip():
+            words = line.split()
+            del words[wall]
+            lines.append(" ".join(words))
+        else:
+            lines.append(line)
+    return lines
+
+
+def results(directory):
+    return [without_wall_time(os.path.join(directory, f)) for f in ("statistics", "summary", "solution.pvd")]
+
+
+def launch(prm, log):
+    return subprocess.Popen(command + [prm], stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+
+
+# The uninterrupted reference, and its wall time (the scale of the kill moments).
+reference_dir = os.path.join(work, "reference")
+with open(os.path.join(work, "reference.log"), "w") as log:
+    start = time.time()
+    status = launch(prm_for(reference_dir), log).wait()
+    reference_seconds = time.time() - start
+if status != 0:
+    sys.exit("the reference run failed; see " + os.path.join(work, "reference.log"))
+reference = results(reference_dir)
+print(f"reference run: {reference_seconds:.2f} s, {len(reference[0])} statistics lines")
+
+rows = []
+for trial in range(1, args.trials + 1):
+    directory = os.path.join(work, f"trial{trial}")
+    shutil.rmtree(directory, ignore_errors=True)
+    prm = prm_for(directory)
+    kills = kills_in_checkpoint = launches = 0
+    survived = 1
+    start = time.time()
+    log = open(os.path.join(work, f"trial{trial}.log"), "w")
+    while True:
+        launches += 1
+        process = launch(prm, log)
+        if kills < args.kills:
+            try:
+                process.wait(timeout=random.uniform(0.0, reference_seconds))
+            except subprocess.TimeoutExpired:
+                os.killpg(process.pid, signal.SIGKILL)
+                process.wait()
+                kills += 1
+                # A slot or `last` half written at the moment of the kill.
+                if glob.glob(os.path.join(directory, "checkpoint", "*.tmp")):
+                    kills_in_checkpoint += 1
+                continue
+        else:
+            process.wait()
+        if process.returncode != 0:
+            survived = 0
+        break
+    log.close()
+    identical = int(survived == 1 and results(directory) == reference)
+    rows.append(dict(trial=trial, kills=kills, kills_during_checkpoint=kills_in_checkpoint, launches=launches,
+                     survived=survived, identical=identical, wall_seconds=f"{time.time() - start:.2f}"))
+    print(f"trial {trial}: {kills} kills ({kills_in_checkpoint} during a checkpoint write), "
+          f"survived {survived}, identical {identical}", flush=True)
+
+with open(os.path.join(here, "results.csv"), "w", newline="") as f:
+    writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+    writer.writeheader()
+    writer.writerows(rows)
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+fig, ax = plt.subplots(figsize=(8, 3.2))
+trials = [r["trial"] for r in rows]
+ok = [r["survived"] and r["identical"] for r in rows]
+ax.bar(trials, [r["kills"] for r in rows], color=["tab:green" if o else "tab:red" for o in ok],
+       label="SIGKILLs (green: survived, identical)")
+ax.bar(trials, [r["kills_during_checkpoint"] for r in rows], color="tab:blue", label="… during a checkpoint write")
+ax.set_xlabel("trial")
+ax.set_ylabel("kills")
+ax.set_title(f"{sum(r['kills'] for r in rows)} kills in {len(rows)} trials: "
+             f"{sum(ok)}/{len(rows)} survived with identical results")
+ax.legend(loc="lower right", fontsize=8)
+fig.tight_layout()
+fig.savefig(os.path.join(here, "restart_stress.png"), dpi=120)
+print(f"work directory {work}")
+all_ok = all(ok)
+if all_ok:
+    shutil.rmtree(work, ignore_errors=True)
+sys.exit(0 if all_ok else 1)
