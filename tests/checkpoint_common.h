@@ -1,5 +1,5 @@
 // Shared by the checkpoint_* tests: runs scene full in-process (the rotating prolate of
-// full_rotation.prm, refinement 2, adaptive τ, t ∈ [0, 0.1]) with prm overrides, captures the screen,
+// full_rotation.prm, refinement 2, adaptive τ, t ∈ [0, 0.06]: 6 steps) with prm overrides, captures the screen,
 // and reads `statistics` and `summary` without their wall-time entries (the only values that may
 // differ between an interrupted and an uninterrupted run).
 #include <deal.II/base/mpi.h>
@@ -40,7 +40,7 @@ namespace CheckpointTest
                      {"geometry/semi-axes", "0.61, 0.61, 2.02"},
                      {"geometry/refinement", "2"},
                      {"initial state/angular velocity", "4"},
-                     {"time stepping/end time", "0.1"},
+                     {"time stepping/end time", "0.06"},
                      {"time stepping/time step", "0.01"},
                      {"output/output directory", directory},
                      {"output/overwrite", "false"},

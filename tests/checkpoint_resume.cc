@@ -1,7 +1,7 @@
-// ASPECT-style checkpoint test of scene full (rotating prolate, adaptive τ): run A goes to t = 0.1
+// ASPECT-style checkpoint test of scene full (rotating prolate, adaptive τ): run A goes to t = 0.06
 // without checkpoints; run B writes a checkpoint every 3 steps and stops after 4 ('steps per run'),
 // then is resumed (resume = true, in a directory that holds its statistics, overwrite = false) to
-// t = 0.1. The statistics and summary of A and B must be identical apart from the wall time, and
+// t = 0.06. The statistics and summary of A and B must be identical apart from the wall time, and
 // resuming the finished run (resume = auto) from its final checkpoint changes nothing.
 #include "checkpoint_common.h"
 
