@@ -109,6 +109,33 @@ def results(directory):
     return [without_wall_time(os.path.join(directory, f)) for f in ("statistics", "summary", "solution.pvd")]
 
 
+def processes_of(prm):
+    """PIDs of the processes started with @p prm on their command line (mpirun and its ranks)."""
+    pids = []
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                with open(f"/proc/{entry}/cmdline", "rb") as f:
+                    if prm.encode() in f.read().split(b"\0"):
+                        pids.append(int(entry))
+            except OSError:
+                pass
+    return pids
+
+
+def kill_run(process, prm):
+    """SIGKILL to the whole run: mpirun's ranks have process groups of their own, so each is killed."""
+    os.killpg(process.pid, signal.SIGKILL)
+    for pid in processes_of(prm):
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except OSError:
+            pass
+    process.wait()
+    while processes_of(prm):
+        time.sleep(0.01)
+
+
 def launch(prm, log):
     return subprocess.Popen(command + [prm], stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
 
@@ -140,8 +167,7 @@ for trial in range(1, args.trials + 1):
             try:
                 process.wait(timeout=random.uniform(0.0, reference_seconds))
             except subprocess.TimeoutExpired:
-                os.killpg(process.pid, signal.SIGKILL)
-                process.wait()
+                kill_run(process, prm)
                 kills += 1
                 # A slot or `last` half written at the moment of the kill.
                 if glob.glob(os.path.join(directory, "checkpoint", "*.tmp")):
