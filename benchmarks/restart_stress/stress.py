@@ -136,6 +136,18 @@ def kill_run(process, prm):
         time.sleep(0.01)
 
 
+def agree(lines, reference, tolerance=1e-9):
+    """Statistics rows equal to rounding: every number within tolerance × (largest |value| of its column)."""
+    if lines is None or len(lines) != len(reference):
+        return False
+    rows = [[float(w) for w in l.split()] for l in lines if l and not l.startswith("#")]
+    ref = [[float(w) for w in l.split()] for l in reference if l and not l.startswith("#")]
+    if [len(r) for r in rows] != [len(r) for r in ref]:
+        return False
+    scale = [max(abs(r[c]) for r in ref) for c in range(len(ref[0]))]
+    return all(abs(a - b) <= tolerance * scale[c] + 1e-300 for x, y in zip(rows, ref) for c, (a, b) in enumerate(zip(x, y)))
+
+
 def launch(prm, log):
     return subprocess.Popen(command + [prm], stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
 
@@ -179,11 +191,14 @@ for trial in range(1, args.trials + 1):
             survived = 0
         break
     log.close()
-    identical = int(survived == 1 and results(directory) == reference)
+    final = results(directory)
+    identical = int(survived == 1 and final == reference)
+    agrees = int(survived == 1 and agree(final[0], reference[0]))
     rows.append(dict(trial=trial, kills=kills, kills_during_checkpoint=kills_in_checkpoint, launches=launches,
-                     survived=survived, identical=identical, wall_seconds=f"{time.time() - start:.2f}"))
+                     survived=survived, identical=identical, agree_1e_9=agrees,
+                     wall_seconds=f"{time.time() - start:.2f}"))
     print(f"trial {trial}: {kills} kills ({kills_in_checkpoint} during a checkpoint write), "
-          f"survived {survived}, identical {identical}", flush=True)
+          f"survived {survived}, identical {identical}, statistics equal to 1e-9: {agrees}", flush=True)
 
 with open(os.path.join(here, "results.csv"), "w", newline="") as f:
     writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
@@ -191,7 +206,9 @@ with open(os.path.join(here, "results.csv"), "w", newline="") as f:
     writer.writerows(rows)
 plot(rows)
 print(f"work directory {work}")
-all_ok = all(r["survived"] and r["identical"] for r in rows)
+# On several ranks even two uninterrupted runs differ in the last digits (the parallel direct solve is
+# not bit-reproducible), so there the statistics must agree to rounding.
+all_ok = all(r["survived"] and (r["identical"] if args.np == 1 else r["agree_1e_9"]) for r in rows)
 if all_ok:
     shutil.rmtree(work, ignore_errors=True)
 sys.exit(0 if all_ok else 1)
