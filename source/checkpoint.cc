@@ -435,8 +435,9 @@ namespace FluidSurface
                       Patterns::Selection("true|false|auto"),
                       "Continue the run from the last good checkpoint in the output directory. true: a "
                       "usable checkpoint must exist; auto: resume when one exists, else start a new run; "
-                      "false: start a new run (and remove old checkpoints). A resumed run continues bit for "
-                      "bit on the same number of MPI ranks, and also works on any other number.");
+                      "false: start a new run (and remove old checkpoints). A resumed run continues exactly: bit "
+                      "for bit on one MPI rank, to rounding on several (as two uninterrupted parallel runs "
+                      "differ), also on a different number of ranks than the checkpoint's.");
     prm.declare_entry("steps per run",
                       "0",
                       Patterns::Integer(0),
