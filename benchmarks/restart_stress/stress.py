@@ -164,6 +164,18 @@ def agree(lines, reference, tolerance=1e-9):
     return True
 
 
+def temporary_files(directory):
+    """(path, modification time) of the checkpoint's temporary slot or `last` and of the files in them."""
+    found = set()
+    for path in glob.glob(os.path.join(directory, "checkpoint", "*.tmp")) + \
+            glob.glob(os.path.join(directory, "checkpoint", "*.tmp", "*")):
+        try:
+            found.add((path, os.stat(path).st_mtime_ns))
+        except OSError:
+            pass
+    return found
+
+
 def launch(prm, log):
     return subprocess.Popen(command + [prm], stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
 
@@ -190,6 +202,7 @@ for trial in range(1, args.trials + 1):
     log = open(os.path.join(work, f"trial{trial}.log"), "w")
     while True:
         launches += 1
+        before = temporary_files(directory)
         process = launch(prm, log)
         if kills < args.kills:
             try:
@@ -197,8 +210,8 @@ for trial in range(1, args.trials + 1):
             except subprocess.TimeoutExpired:
                 kill_run(process, prm)
                 kills += 1
-                # A slot or `last` half written at the moment of the kill.
-                if glob.glob(os.path.join(directory, "checkpoint", "*.tmp")):
+                # A slot or `last` half written at the moment of the kill (not one left by an earlier kill).
+                if temporary_files(directory) - before:
                     kills_in_checkpoint += 1
                 continue
         else:
