@@ -2,6 +2,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <fluid_surface/checkpoint.h>
 #include <fluid_surface/diagnostics.h>
 #include <fluid_surface/parameter_file.h>
 
@@ -534,5 +535,43 @@ namespace FluidSurface
           << "min L2 distance to equilibrium: " << min_l2_distance << '\n'
           << "time of min L2 distance: " << min_l2_time << '\n'
           << mean_rotation_comparison;
+  }
+
+  void
+  Diagnostics::save(CheckpointData &data) const
+  {
+    data.set("diagnostics/have initial", have_initial);
+    data.set("diagnostics/initial area", initial.area);
+    data.set("diagnostics/initial volume", initial.volume);
+    data.set("diagnostics/initial reduced volume", initial.reduced_volume);
+    data.set("diagnostics/min L2 distance", min_l2_distance);
+    data.set("diagnostics/min L2 time", min_l2_time);
+    data.set("diagnostics/initial angular momentum", initial.angular_momentum);
+    data.set("diagnostics/max area drift", area_drift);
+    data.set("diagnostics/max volume drift", volume_drift);
+    data.set("diagnostics/max angular momentum drift", angular_momentum_drift);
+    data.set("diagnostics/t_sym_1e-4", crossing_1e4);
+    data.set("diagnostics/t_sym_1e-2", crossing_1e2);
+    data.set("diagnostics/omega integral", omega_integral);
+    data.set("diagnostics/omega time", omega_time);
+  }
+
+  void
+  Diagnostics::load(const CheckpointData &data)
+  {
+    have_initial             = data.get_bool("diagnostics/have initial");
+    initial.area             = data.get_double("diagnostics/initial area");
+    initial.volume           = data.get_double("diagnostics/initial volume");
+    initial.reduced_volume   = data.get_double("diagnostics/initial reduced volume");
+    min_l2_distance          = data.get_double("diagnostics/min L2 distance");
+    min_l2_time              = data.get_double("diagnostics/min L2 time");
+    initial.angular_momentum = data.get_tensor("diagnostics/initial angular momentum");
+    area_drift               = data.get_double("diagnostics/max area drift");
+    volume_drift             = data.get_double("diagnostics/max volume drift");
+    angular_momentum_drift   = data.get_double("diagnostics/max angular momentum drift");
+    crossing_1e4             = data.get_double("diagnostics/t_sym_1e-4");
+    crossing_1e2             = data.get_double("diagnostics/t_sym_1e-2");
+    omega_integral           = data.get_double("diagnostics/omega integral");
+    omega_time               = data.get_double("diagnostics/omega time");
   }
 } // namespace FluidSurface

@@ -10,6 +10,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <fluid_surface/checkpoint.h>
 #include <fluid_surface/fluid_deformable_surface.h>
 #include <fluid_surface/output_writer.h>
 #include <fluid_surface/parameter_file.h>
@@ -754,5 +755,42 @@ namespace FluidSurface
     data_out.add_data_vector(dofs, current, names, kinds);
     static const SpeedPostprocessor speed;
     data_out.add_data_vector(dofs, current, speed);
+  }
+
+  void
+  FluidDeformableSurface::save(CheckpointData &data) const
+  {
+    data.set_fields("flow", dofs, {&current});
+    data.set_fields("geometry", geometry.dof_handler(), {&current_position, &old_position});
+    data.set("model/element", fe->get_name());
+    data.set("model/target volume", target_volume);
+    data.set("model/target area", target_area);
+    data.set("model/last tau", last_tau);
+    data.set("model/last step tau", last_step_tau);
+    // The seeded random fields are drawn in setup() only; the seed is kept for the record.
+    data.set("model/random seed", random_seed);
+  }
+
+  void
+  FluidDeformableSurface::load(const CheckpointData &data)
+  {
+    setup_dofs();
+    if (data.get_string("model/element") != fe->get_name())
+      throw std::runtime_error("the checkpoint holds the element " + data.get_string("model/element") +
+                               ", this run uses " + fe->get_name());
+    const MPI_Comm comm = geometry.get_communicator();
+    VectorType     state, position, previous;
+    data.get_fields("flow", dofs, {&state});
+    data.get_fields("geometry", geometry.dof_handler(), {&position, &previous});
+    current = state;
+    geometry.set_position(position);
+    current_position = geometry.position();
+    old_position.reinit(geometry.locally_owned_dofs(), geometry.locally_relevant_dofs(), comm);
+    old_position  = previous;
+    target_volume = data.get_double("model/target volume");
+    target_area   = data.get_double("model/target area");
+    last_tau      = data.get_double("model/last tau");
+    last_step_tau = data.get_double("model/last step tau");
+    geometry.compute_curvature();
   }
 } // namespace FluidSurface

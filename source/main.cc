@@ -19,7 +19,8 @@ namespace
   fluid_surface --help                   this text
 
 Runs in parallel with mpirun -np N. Results go to the `output directory` of FILE.prm.
-Exit status: 0 success, 1 a computation failed, 2 bad input (the message names file and entry).
+Exit status: 0 success (or stopped after 'checkpoint/steps per run'), 1 a computation failed, 2 bad input
+(the message names file and entry), 130/143 stopped by SIGINT/SIGTERM after writing a checkpoint.
 )";
 
   void
@@ -84,6 +85,12 @@ main(int argc, char **argv)
           return 0;
         }
       simulation.run(prm);
+    }
+  catch (const RunStopped &exc)
+    {
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        (exc.exit_status() == 0 ? std::cout : std::cerr) << "fluid_surface: " << exc.what() << std::endl;
+      return exc.exit_status();
     }
   catch (const InputError &exc)
     {

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <fluid_surface/checkpoint.h>
 #include <fluid_surface/output_writer.h>
 #include <fluid_surface/parameter_file.h>
 
@@ -159,6 +160,38 @@ namespace FluidSurface
     times_and_names.emplace_back(time, name);
     last_output_time = time;
     if (Utilities::MPI::this_mpi_process(geometry.get_communicator()) == 0)
+      {
+        const std::string pvd = directory() + "solution.pvd";
+        {
+          std::ofstream out(pvd + ".tmp");
+          DataOutBase::write_pvd_record(out, times_and_names);
+        }
+        std::filesystem::rename(pvd + ".tmp", pvd);
+      }
+  }
+
+  void
+  OutputWriter::save(CheckpointData &data) const
+  {
+    data.set("output/last output time", last_output_time);
+    data.set("output/files", static_cast<unsigned int>(times_and_names.size()));
+    for (unsigned int i = 0; i < times_and_names.size(); ++i)
+      {
+        data.set("output/file " + std::to_string(i) + " time", times_and_names[i].first);
+        data.set("output/file " + std::to_string(i) + " name", times_and_names[i].second);
+      }
+  }
+
+  void
+  OutputWriter::load(const CheckpointData &data, const MPI_Comm communicator)
+  {
+    last_output_time = data.get_double("output/last output time");
+    times_and_names.clear();
+    const unsigned int n = data.get_unsigned("output/files");
+    for (unsigned int i = 0; i < n; ++i)
+      times_and_names.emplace_back(data.get_double("output/file " + std::to_string(i) + " time"),
+                                   data.get_string("output/file " + std::to_string(i) + " name"));
+    if (write_vtu && Utilities::MPI::this_mpi_process(communicator) == 0)
       {
         const std::string pvd = directory() + "solution.pvd";
         {

@@ -4,6 +4,8 @@
 #include <fluid_surface/parameter_file.h>
 #include <fluid_surface/simulation.h>
 
+#include <csignal>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <iomanip>
@@ -40,6 +42,7 @@ namespace FluidSurface
     TimeStepper::declare_parameters(prm);
     FluidDeformableSurface::declare_parameters(prm);
     Diagnostics::declare_parameters(prm);
+    Checkpoint::declare_parameters(prm);
   }
 
   void
@@ -59,6 +62,9 @@ namespace FluidSurface
         model.parse_parameters(prm);
         diagnostics.parse_parameters(prm);
       }
+    checkpoint.parse_parameters(prm);
+    if (scene != Scene::full && checkpoint.resume_mode() == Checkpoint::Resume::yes)
+      throw_invalid_entry("checkpoint/resume", "true", "false or auto: only scene full writes checkpoints");
   }
 
   void
@@ -87,7 +93,16 @@ namespace FluidSurface
   Simulation::run(const ParameterHandler &prm)
   {
     wall_timer.restart();
-    output.prepare_directory(communicator, false);
+    wall_time_before_restart = 0;
+    bool resuming            = false;
+    if (scene == Scene::full)
+      {
+        checkpoint.initialize(output.directory() + "checkpoint/", communicator);
+        resuming = checkpoint.find(std::cout);
+      }
+    output.prepare_directory(communicator, resuming);
+    if (scene == Scene::full && !resuming)
+      checkpoint.clear();
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
         std::ofstream used(output.directory() + "used_parameters.prm");
@@ -100,7 +115,8 @@ namespace FluidSurface
           << geometry.dof_handler().n_dofs() << " position DoFs, "
           << Utilities::MPI::n_mpi_processes(communicator) << " MPI rank(s)" << std::endl;
 
-    statistics.open(output.directory() + "statistics", Utilities::MPI::this_mpi_process(communicator));
+    if (!resuming)
+      statistics.open(output.directory() + "statistics", Utilities::MPI::this_mpi_process(communicator));
     if (scene == Scene::geometry)
       {
         record_geometry_statistics(0, 0.0);
@@ -109,7 +125,7 @@ namespace FluidSurface
     else if (scene == Scene::fixed_surface)
       fixed_surface_scene.run(geometry, output, statistics, pcout);
     else
-      run_full_model();
+      run_full_model(resuming);
   }
 
   void
@@ -132,12 +148,12 @@ namespace FluidSurface
     diagnostics.add_to_statistics(v, statistics);
     statistics.add_value("volume multiplier", step.gamma);
     statistics.add_value("linear iterations", step.linear_iterations);
-    statistics.add_value("wall time", wall_timer.wall_time());
+    statistics.add_value("wall time", elapsed_wall_time());
     statistics.end_row();
 
     if (time.step_number() % output.screen_interval() == 0 || !time.before_end())
       {
-        const double elapsed = wall_timer.wall_time();
+        const double elapsed = elapsed_wall_time();
         const double per_step = time.step_number() > 0 ? elapsed / time.step_number() : 0.0;
         const double eta =
           time.time() > 0 ? elapsed * (time.final_time() - time.time()) / time.time() : 0.0;
@@ -161,24 +177,92 @@ namespace FluidSurface
   }
 
   void
-  Simulation::run_full_model()
+  Simulation::run_full_model(const bool resuming)
   {
-    model.setup();
-    pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ" << std::endl;
-    {
-      std::ostringstream report;
-      diagnostics.set_reference(diagnostics.evaluate(geometry, model.dof_handler(), model.solution()),
-                                model.bending_number(),
-                                report);
-      pcout << report.str() << std::flush;
-    }
-    double willmore = geometry.compute_curvature();
-    record_full_model_step(0.0, willmore, FluidDeformableSurface::StepResult());
-    output.write(geometry, time.time(), [&](DataOut<2, 3> &data_out) { model.add_output_fields(data_out); });
-
     double       previous_rate  = 0;
     double       tau_before_rejections = 0;
     unsigned int n_energy_rises = 0;
+    double       willmore       = 0;
+    if (resuming)
+      {
+        const CheckpointData data = checkpoint.read();
+        if (data.get_string("simulation/geometry") != geometry.description())
+          throw InputError((parameter_file_name().empty() ? std::string("parameters") : parameter_file_name()) +
+                           ": the checkpoint " + checkpoint.last_slot() +
+                           " was written for the geometry '" + data.get_string("simulation/geometry") +
+                           "', the parameter file describes '" + geometry.description() +
+                           "'; expected the geometry of the run to resume, or resume = false.");
+        model.load(data);
+        time.load(data);
+        diagnostics.load(data);
+        output.load(data, communicator);
+        statistics.resume(output.directory() + "statistics", Utilities::MPI::this_mpi_process(communicator), data);
+        total_energy             = data.get_double("simulation/total energy");
+        previous_rate            = data.get_double("simulation/previous rate");
+        tau_before_rejections    = data.get_double("simulation/tau before rejections");
+        n_energy_rises           = data.get_unsigned("simulation/energy rises");
+        wall_time_before_restart = data.get_double("simulation/wall time");
+        willmore                 = geometry.compute_curvature();
+        // The restored fields must reproduce the energy recorded with them (to rounding: the rank count may differ).
+        const double energy = model.kinetic_energy() + model.bending_energy(willmore);
+        if (!(std::abs(energy - total_energy) <= 1e-10 * std::abs(total_energy)))
+          {
+            std::ostringstream msg;
+            msg << "the checkpoint " << checkpoint.last_slot() << " does not reproduce its total energy ("
+                << std::setprecision(17) << total_energy << " recorded, " << energy << " from its fields)";
+            throw std::runtime_error(msg.str());
+          }
+        std::ostringstream report;
+        diagnostics.set_reference(diagnostics.initial_values(), model.bending_number(), report);
+        pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ\n"
+              << report.str() << "-- resumed from " << checkpoint.last_slot() << ": step " << time.step_number()
+              << ", t = " << time.time() << std::endl;
+      }
+    else
+      {
+        model.setup();
+        pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ" << std::endl;
+        std::ostringstream report;
+        diagnostics.set_reference(diagnostics.evaluate(geometry, model.dof_handler(), model.solution()),
+                                  model.bending_number(),
+                                  report);
+        pcout << report.str() << std::flush;
+        willmore = geometry.compute_curvature();
+        record_full_model_step(0.0, willmore, FluidDeformableSurface::StepResult());
+        output.write(geometry, time.time(), [&](DataOut<2, 3> &data_out) { model.add_output_fields(data_out); });
+      }
+
+    // Everything a resumed run needs to continue bit for bit.
+    auto write_checkpoint = [&]() {
+      CheckpointData data;
+      data.set("simulation/geometry", geometry.description());
+      data.set("simulation/total energy", total_energy);
+      data.set("simulation/previous rate", previous_rate);
+      data.set("simulation/tau before rejections", tau_before_rejections);
+      data.set("simulation/energy rises", n_energy_rises);
+      data.set("simulation/wall time", elapsed_wall_time());
+      model.save(data);
+      time.save(data);
+      diagnostics.save(data);
+      output.save(data);
+      statistics.save(data);
+      return checkpoint.write(data, time.step_number(), time.time(), std::cout);
+    };
+    // SIGINT/SIGTERM only set a flag while the loop runs; the defaults come back however it ends.
+    struct SignalScope
+    {
+      SignalScope()
+      {
+        Checkpoint::install_signal_handlers();
+      }
+      ~SignalScope()
+      {
+        Checkpoint::remove_signal_handlers();
+      }
+    } signal_scope;
+
+    unsigned int steps_this_run       = 0;
+    unsigned int last_checkpoint_step = resuming ? time.step_number() : numbers::invalid_unsigned_int;
     while (time.before_end())
       {
         const double                             tau  = time.step_size();
@@ -232,18 +316,51 @@ namespace FluidSurface
           }
         if (output.due(time.time()) || !time.before_end())
           output.write(geometry, time.time(), [&](DataOut<2, 3> &data_out) { model.add_output_fields(data_out); });
+
+        ++steps_this_run;
+        const int  signal = checkpoint.received_signal();
+        const bool stop   = time.before_end() && (signal != 0 || (checkpoint.steps_per_run() > 0 &&
+                                                                  steps_this_run >= checkpoint.steps_per_run()));
+        bool written = false;
+        if (stop || (checkpoint.enabled() && checkpoint.due(time.step_number())))
+          {
+            written = write_checkpoint();
+            if (written)
+              last_checkpoint_step = time.step_number();
+          }
+        if (stop)
+          {
+            std::ostringstream msg;
+            msg << (signal == SIGINT ? "interrupted (SIGINT)" : signal != 0 ? "terminated (SIGTERM)" :
+                                                                               "stopped after 'steps per run'")
+                << " at step " << time.step_number() << ", t = " << time.time() << "; ";
+            if (written)
+              msg << "checkpoint written to " << checkpoint.last_slot()
+                  << "; continue with 'set resume = auto' in subsection checkpoint";
+            else
+              msg << "the checkpoint could not be written"
+                  << (checkpoint.last_slot().empty() ? std::string() :
+                                                       "; the last good one is " + checkpoint.last_slot());
+            throw RunStopped(msg.str(), signal != 0 ? 128 + signal : (written ? 0 : 1));
+          }
       }
+    // A final checkpoint lets a finished run be extended (a later end time, resume = auto).
+    if (checkpoint.enabled() && last_checkpoint_step != time.step_number())
+      write_checkpoint();
 
     diagnostics.compare_with_mean_rotation(geometry);
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
-        std::ofstream summary(output.directory() + "summary");
-        diagnostics.write_summary(summary, total_energy, time.step_number(), time.n_rejected_steps(),
-                                  wall_timer.wall_time());
-        summary << "energy rises accepted: " << n_energy_rises << '\n';
+        {
+          std::ofstream summary(output.directory() + "summary.tmp");
+          diagnostics.write_summary(summary, total_energy, time.step_number(), time.n_rejected_steps(),
+                                    elapsed_wall_time());
+          summary << "energy rises accepted: " << n_energy_rises << '\n';
+        }
+        std::filesystem::rename(output.directory() + "summary.tmp", output.directory() + "summary");
         std::ostringstream text;
         diagnostics.write_summary(text, total_energy, time.step_number(), time.n_rejected_steps(),
-                                  wall_timer.wall_time());
+                                  elapsed_wall_time());
         text << "energy rises accepted: " << n_energy_rises << '\n';
         std::istringstream lines(text.str());
         std::cout << "--- summary\n";

@@ -1,3 +1,4 @@
+#include <fluid_surface/checkpoint.h>
 #include <fluid_surface/parameter_file.h>
 #include <fluid_surface/time_stepper.h>
 
@@ -113,5 +114,25 @@ namespace FluidSurface
         throw std::runtime_error(msg.str());
       }
     tau *= shrink;
+  }
+
+  void
+  TimeStepper::save(CheckpointData &data) const
+  {
+    data.set("time stepping/time", current_time);
+    data.set("time stepping/tau", tau);
+    data.set("time stepping/steps", n_accepted);
+    data.set("time stepping/rejected steps", n_rejected);
+    data.set("time stepping/easy steps", n_easy);
+  }
+
+  void
+  TimeStepper::load(const CheckpointData &data)
+  {
+    set_state({data.get_double("time stepping/time"),
+               data.get_double("time stepping/tau"),
+               data.get_unsigned("time stepping/steps"),
+               data.get_unsigned("time stepping/rejected steps"),
+               data.get_unsigned("time stepping/easy steps")});
   }
 } // namespace FluidSurface

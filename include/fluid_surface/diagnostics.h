@@ -18,6 +18,8 @@
 
 namespace FluidSurface
 {
+  class CheckpointData;
+
   /**
    * A plane section of the surface in polar form: the distance r(φ_j) from @p centre to the surface along the
    * ray centre + r (cos φ_j e₁ + sin φ_j e₂), φ_j = 2πj/n, j = 0..n−1, in the plane spanned by the orthonormal
@@ -98,6 +100,13 @@ namespace FluidSurface
     void
     set_reference(const Values &initial, const double bending_number, std::ostream &out);
 
+    /// The values of the first record() (restored by load()).
+    const Values &
+    initial_values() const
+    {
+      return initial;
+    }
+
     /// The reference equilibrium of E(L²), or nullptr.
     const AxisymmetricEquilibrium *
     reference() const
@@ -143,6 +152,12 @@ namespace FluidSurface
     {
       return angular_momentum_drift;
     }
+
+    /// Writes the reference values, running drifts, crossing times and the ω integral into a checkpoint.
+    void
+    save(CheckpointData &data) const;
+    void
+    load(const CheckpointData &data);
 
   private:
     dealii::Tensor<1, 3> axis;

@@ -19,6 +19,8 @@
 
 namespace FluidSurface
 {
+  class CheckpointData;
+
   /**
    * Helfrich bending force b = (1/Be)(−Δ_S H − H(|B|² − ½H²)) ν, discretized
    * with the bending scalar y: (y, φ) − (∇_S κ, ∇_S φ) + (c κ, φ) = 0 with the
@@ -195,6 +197,21 @@ namespace FluidSurface
     {
       return old_position;
     }
+
+    /**
+     * Writes the accepted state into a checkpoint: the fields u, p, κ, y, Y
+     * (flow DoFs), X^m and X^{m−1} (geometry DoFs), and V₀, A₀, the last τ
+     * and the random seed. Collective.
+     */
+    void
+    save(CheckpointData &data) const;
+
+    /**
+     * Instead of setup(): distributes DoFs, reads the state of a checkpoint
+     * (written on any number of ranks) and moves the geometry to its X^m.
+     */
+    void
+    load(const CheckpointData &data);
 
   private:
     void

@@ -14,6 +14,8 @@
 
 namespace FluidSurface
 {
+  class CheckpointData;
+
   /// The speed |u| from the first three components of a field, for the VTU files.
   class SpeedPostprocessor : public dealii::DataPostprocessorScalar<3>
   {
@@ -95,6 +97,13 @@ namespace FluidSurface
     {
       return times_and_names;
     }
+
+    /// Writes the output counters (the pvd record and the time of the last VTU file) into a checkpoint.
+    void
+    save(CheckpointData &data) const;
+    /// Restores the counters and rewrites solution.pvd with the files up to the checkpoint.
+    void
+    load(const CheckpointData &data, const MPI_Comm communicator);
 
   private:
     std::string  output_directory = "results";

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <fluid_surface/checkpoint.h>
 #include <fluid_surface/diagnostics.h>
 #include <fluid_surface/fluid_deformable_surface.h>
 #include <fluid_surface/output_writer.h>
@@ -44,15 +45,26 @@ namespace FluidSurface
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
-    /// Runs the scene; writes into the output directory. @p prm is echoed as used_parameters.prm.
+    /**
+     * Runs the scene; writes into the output directory. @p prm is echoed as
+     * used_parameters.prm. Throws RunStopped when a full-model run stops on a
+     * signal or after `checkpoint/steps per run` steps (with a checkpoint).
+     */
     void
     run(const dealii::ParameterHandler &prm);
 
   private:
     void
     record_geometry_statistics(const unsigned int step, const double time);
+    /// The time loop of scene full, from step 0 or from the checkpoint Checkpoint::find() chose.
     void
-    run_full_model();
+    run_full_model(const bool resuming);
+    /// Wall time of the run in seconds, including the part before a restart.
+    double
+    elapsed_wall_time() const
+    {
+      return wall_time_before_restart + wall_timer.wall_time();
+    }
     /// One statistics row and screen report of the full model's accepted state.
     void
     record_full_model_step(const double tau, const double willmore, const FluidDeformableSurface::StepResult &step);
@@ -70,7 +82,9 @@ namespace FluidSurface
     FluidDeformableSurface model;
     Diagnostics            diagnostics;
     FixedSurfaceScene      fixed_surface_scene;
-    double                 total_energy = 0;
+    Checkpoint             checkpoint;
+    double                 total_energy             = 0;
+    double                 wall_time_before_restart = 0;
   };
 } // namespace FluidSurface
 

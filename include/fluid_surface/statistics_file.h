@@ -1,6 +1,7 @@
 #ifndef fluid_surface_statistics_file_h
 #define fluid_surface_statistics_file_h
 
+#include <cstdint>
 #include <fstream>
 #include <string>
 #include <utility>
@@ -8,6 +9,8 @@
 
 namespace FluidSurface
 {
+  class CheckpointData;
+
   /**
    * The `statistics` file users script against (ASPECT's format): one
    * `# N: name` header line per column, then one whitespace-separated row per
@@ -38,7 +41,21 @@ namespace FluidSurface
       return columns;
     }
 
+    /// Writes the column names and the file length (bytes of the complete rows) into a checkpoint; fsyncs the file.
+    void
+    save(CheckpointData &data) const;
+
+    /**
+     * Reopens @p filename after a restart: cut back to the rows of the
+     * checkpoint (a row written after it, or half written when the run was
+     * killed, is removed) and continued from there.
+     */
+    void
+    resume(const std::string &filename, const unsigned int rank, const CheckpointData &data);
+
   private:
+    std::string                                 path;
+    std::uint64_t                               length = 0; ///< bytes of the complete rows
     std::ofstream                               file;
     bool                                        writes = false;
     std::vector<std::string>                    columns;

@@ -8,6 +8,8 @@
 
 namespace FluidSurface
 {
+  class CheckpointData;
+
   /**
    * Time and step size τ of a run, with the energy-based step control: a step
    * whose total energy F rises by more than the tolerance, or whose solve
@@ -93,6 +95,13 @@ namespace FluidSurface
       n_rejected   = s.n_rejected;
       n_easy       = s.n_easy;
     }
+
+    /// Writes time, τ and the controller counters into a checkpoint (keys `time stepping/…`).
+    void
+    save(CheckpointData &data) const;
+    /// Continues from a checkpoint; the end time and the controller parameters stay those of the prm.
+    void
+    load(const CheckpointData &data);
 
   private:
     double       end_time         = 1;

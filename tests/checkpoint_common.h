@@ -1,0 +1,156 @@
+// Shared by the checkpoint_* tests: runs scene full in-process (the rotating prolate of
+// full_rotation.prm, refinement 2, adaptive τ, t ∈ [0, 0.06]: 6 steps) with prm overrides, captures the screen,
+// and reads `statistics` and `summary` without their wall-time entries (the only values that may
+// differ between an interrupted and an uninterrupted run).
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <fluid_surface/checkpoint.h>
+#include <fluid_surface/parameter_file.h>
+#include <fluid_surface/simulation.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CheckpointTest
+{
+  using Overrides = std::vector<std::pair<std::string, std::string>>;
+
+  struct Outcome
+  {
+    int         status = 0; ///< what main() would return
+    std::string message;    ///< RunStopped's or the error's text
+    std::string screen;     ///< what the run printed on rank 0
+  };
+
+  /// Runs the test case into @p directory with @p overrides on @p comm.
+  inline Outcome
+  run(const std::string &directory, const Overrides &overrides, const MPI_Comm comm = MPI_COMM_WORLD)
+  {
+    using namespace FluidSurface;
+    dealii::ParameterHandler prm;
+    Simulation::declare_parameters(prm);
+    Overrides all = {{"model/scene", "full"},
+                     {"geometry/shape", "ellipsoid"},
+                     {"geometry/semi-axes", "0.61, 0.61, 2.02"},
+                     {"geometry/refinement", "2"},
+                     {"initial state/angular velocity", "4"},
+                     {"time stepping/end time", "0.06"},
+                     {"time stepping/time step", "0.01"},
+                     {"output/output directory", directory},
+                     {"output/overwrite", "false"},
+                     {"output/write vtu", "false"},
+                     {"output/screen interval", "100"},
+                     {"output/report wall time", "false"},
+                     {"checkpoint/wall time between checkpoints", "0"}};
+    all.insert(all.end(), overrides.begin(), overrides.end());
+    for (const auto &[path, value] : all)
+      {
+        const auto slash = path.rfind('/');
+        prm.enter_subsection(path.substr(0, slash));
+        prm.set(path.substr(slash + 1), value);
+        prm.leave_subsection();
+      }
+    Outcome            outcome;
+    std::ostringstream screen;
+    std::streambuf    *old = std::cout.rdbuf(screen.rdbuf());
+    try
+      {
+        Simulation simulation(comm);
+        simulation.parse_parameters(prm);
+        simulation.run(prm);
+      }
+    catch (const RunStopped &exc)
+      {
+        outcome.status  = exc.exit_status();
+        outcome.message = exc.what();
+      }
+    catch (const InputError &exc)
+      {
+        outcome.status  = 2;
+        outcome.message = exc.what();
+      }
+    catch (const std::exception &exc)
+      {
+        outcome.status  = 1;
+        outcome.message = exc.what();
+      }
+    std::cout.rdbuf(old);
+    outcome.screen = screen.str();
+    return outcome;
+  }
+
+  /// The lines of @p file; the column (statistics) or line (summary) named "wall time" removed.
+  inline std::vector<std::string>
+  lines_without_wall_time(const std::string &file)
+  {
+    std::ifstream            in(file);
+    std::vector<std::string> lines;
+    int                      wall_column = -1, n_columns = 0;
+    for (std::string line; std::getline(in, line);)
+      {
+        if (line.rfind("wall time:", 0) == 0)
+          continue;
+        if (line.rfind("# ", 0) == 0)
+          {
+            if (line.size() > 11 && line.compare(line.size() - 11, 11, ": wall time") == 0)
+              wall_column = n_columns;
+            ++n_columns;
+            lines.push_back(line);
+            continue;
+          }
+        if (line.find(':') != std::string::npos)
+          {
+            lines.push_back(line);
+            continue;
+          }
+        std::istringstream words(line);
+        std::string        word, kept;
+        for (int c = 0; words >> word; ++c)
+          if (c != wall_column)
+            kept += (kept.empty() ? "" : " ") + word;
+        lines.push_back(kept);
+      }
+    return lines;
+  }
+
+  /// Number of data rows of a statistics file.
+  inline unsigned int
+  n_rows(const std::vector<std::string> &lines)
+  {
+    unsigned int n = 0;
+    for (const auto &line : lines)
+      n += (line.rfind("#", 0) != 0);
+    return n;
+  }
+
+  /// The screen lines that start with "--" or contain "warning" (checkpoint and resume messages).
+  inline std::string
+  messages(const std::string &screen)
+  {
+    std::istringstream in(screen);
+    std::string        out;
+    for (std::string line; std::getline(in, line);)
+      if ((line.rfind("-- ", 0) == 0 && line.rfind("-- fluid_surface:", 0) != 0) ||
+          line.find("warning") != std::string::npos)
+        out += line + "\n";
+    return out;
+  }
+
+  inline const char *
+  yes_no(const bool b)
+  {
+    return b ? "yes" : "no";
+  }
+
+  inline bool
+  is_root()
+  {
+    return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  }
+} // namespace CheckpointTest
