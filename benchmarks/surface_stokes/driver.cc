@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <fluid_surface/output_writer.h>
+#include <fluid_surface/simulation.h>
 #include <fluid_surface/statistics_file.h>
 #include <fluid_surface/surface_flow.h>
 #include <fluid_surface/surface_geometry.h>
@@ -21,9 +22,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
   const MPI_Comm                           comm = MPI_COMM_WORLD;
   dealii::ParameterHandler                 prm;
-  SurfaceGeometry::declare_parameters(prm);
-  OutputWriter::declare_parameters(prm);
-  FixedSurfaceScene::declare_parameters(prm);
+  Simulation::declare_parameters(prm); // every component's entries, each declared once
   bool verbose = false;
   for (int a = 1; a < argc; ++a)
     {

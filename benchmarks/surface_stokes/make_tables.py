@@ -32,16 +32,44 @@ for shape in ("sphere", "ellipsoid"):
         table(["ref", "DoFs", "‖u−u_h‖", "rate", "‖∇_P(u−u_h)‖", "rate", "‖p−p_h‖", "rate", "‖u_h·ν‖", "rate",
                "wall [s]"], lines)
 
-print("**Stationary solvers** (sphere, k = 2; solver wall time incl. factorization or AMG setup, median of 3)\n")
+print("**Stationary solvers** (sphere; solver wall time incl. factorization or AMG setup, median of 3; "
+      "GMRES its with the velocity AMG aggregation threshold θ = 1e-4, in brackets θ = 0.02)\n")
+lines = []
+def pick(case, solver, k, ref):
+    sel = [r for r in rows if r["case"] == case and solver in r["solver"] and r["k"] == k and r["refinement"] == ref]
+    return sel[0] if sel else None
+for k in ("2", "3"):
+    for ref in sorted({r["refinement"] for r in rows if r["case"] == "stationary solver"}, key=int):
+        klu, mumps, block = (pick("stationary solver", name, k, ref) for name in ("Klu", "Mumps", "block"))
+        old = pick("stationary solver theta", "block", k, ref)
+        if not block:
+            continue
+        lines.append([k, ref, block["dofs"], f"{f(block['gradient L2']):.3e}",
+                      f"{f(klu['solve time']):.3g}" if klu else "", f"{f(mumps['solve time']):.3g}" if mumps else "",
+                      f"{f(block['solve time']):.3g}", block["total iterations"] + (f" ({old['total iterations']})" if old else ""),
+                      f"{f(old['solve time']):.3g}" if old else ""])
+table(["k", "ref", "DoFs", "‖∇_P(u−u_h)‖", "KLU [s]", "MUMPS [s]", "block GMRES [s]", "GMRES its (θ = 0.02)",
+       "block, θ = 0.02 [s]"], lines)
+
+print("**Fastest stationary option per accuracy** (sphere; accuracy = ‖∇_P(u−u_h)‖ of the refinement; wall time "
+      "of the whole run, median of 3)\n")
 lines = []
 for ref in sorted({r["refinement"] for r in rows if r["case"] == "stationary solver"}, key=int):
-    klu = [r for r in rows if r["case"] == "convergence" and r["shape"] == "sphere" and r["k"] == "2" and r["refinement"] == ref]
-    mumps = [r for r in rows if r["case"] == "stationary solver" and "Mumps" in r["solver"] and r["refinement"] == ref]
-    block = [r for r in rows if r["case"] == "stationary solver" and r["solver"].startswith("block") and r["refinement"] == ref]
-    lines.append([ref, block[0]["dofs"],
-                  f"{f(klu[0]['solve time']):.3g}" if klu else "", f"{f(mumps[0]['solve time']):.3g}" if mumps else "",
-                  f"{f(block[0]['solve time']):.3g}" if block else "", block[0]["total iterations"] if block else ""])
-table(["ref", "DoFs", "KLU solve [s]", "MUMPS solve [s]", "block GMRES solve [s]", "GMRES its"], lines)
+    cands = [r for r in rows if r["case"] == "stationary solver" and r["refinement"] == ref]
+    best = min(cands, key=lambda r: f(r["wall time"]))
+    ranking = ", ".join(f"{r['solver'].replace('direct ', '').replace('block preconditioned', 'block')} k={r['k']} "
+                        f"{f(r['wall time']):.3g}" for r in sorted(cands, key=lambda r: f(r["wall time"])))
+    lines.append([ref, best["dofs"], f"{f(best['gradient L2']):.2e}",
+                  best["solver"].replace("direct ", "") + f", k = {best['k']}", ranking])
+table(["ref", "DoFs", "accuracy", "fastest", "all options, wall [s]"], lines)
+
+sel = [r for r in rows if r["case"] == "threads"]
+if sel:
+    print(f"**Assembly threads** (WorkStream; stationary sphere, refinement {sel[0]['refinement']}, "
+          f"{sel[0]['dofs']} DoFs, median of 3)\n")
+    table(["threads", "assembly [s]", "solve [s]", "wall [s]"],
+          [[r["threads"], f"{f(r['assemble time']):.3g}", f"{f(r['solve time']):.3g}", f"{f(r['wall time']):.3g}"]
+           for r in sel])
 
 print("**Penalty variants** (sphere, k = 2; default: exact normal, β = 10, q = 3)\n")
 lines = []

@@ -1,6 +1,7 @@
 #!/bin/bash
 # Surface Stokes / Navier–Stokes on a fixed surface: convergence, dynamics and work–precision.
-# Usage (from the repository root): benchmarks/surface_stokes/run.sh [--quick]
+# Usage (from the repository root): benchmarks/surface_stokes/run.sh [--quick] [--solvers]
+#   --solvers re-runs only the solver comparisons and keeps the accuracy rows of results.csv.
 #   BUILD_DIR (default: build) is a Release build directory of the project; the library is built
 #   there if missing, the driver in $BUILD_DIR/benchmark-surface-stokes.
 # Writes benchmarks/surface_stokes/results.csv and work_precision.png.

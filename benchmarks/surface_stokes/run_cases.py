@@ -1,20 +1,27 @@
 """Runs the surface Stokes benchmark cases through the driver; writes results.csv and the PNG.
-Called by run.sh: run_cases.py DRIVER OUTDIR [--quick]."""
+Called by run.sh: run_cases.py DRIVER OUTDIR [--quick] [--solvers].
+--solvers re-runs only the solver comparisons (sections 2, 2b, 6) and keeps the other rows of the
+existing results.csv (convergence, penalty, Killing, decay: direct-solver accuracy studies)."""
 import csv, math, os, statistics, subprocess, sys, tempfile
 
 driver, outdir = sys.argv[1], sys.argv[2]
 quick = "--quick" in sys.argv[3:]
+solvers_only = "--solvers" in sys.argv[3:]
 repeats = 1 if quick else 3
 workdir = tempfile.mkdtemp(prefix="surface_stokes_")
 
-def run(settings, repeat=repeats):
+def run(settings, repeat=repeats, threads=None):
     """One case; settings: dict 'section/entry' -> value. Returns the driver's key: value dict
-    with 'wall time' (and solve/assemble time) replaced by the median over `repeat` runs."""
+    with 'wall time' (and solve/assemble time) replaced by the median over `repeat` runs.
+    threads: DEAL_II_NUM_THREADS for the run (default: deal.II's, all cores)."""
+    env = dict(os.environ)
+    if threads is not None:
+        env["DEAL_II_NUM_THREADS"] = str(threads)
     args = [driver, "output/write vtu=false", f"output/output directory={workdir}", "output/overwrite=true"]
     args += [f"{k}={v}" for k, v in settings.items()]
     results = []
     for _ in range(repeat):
-        out = subprocess.run(args, check=True, capture_output=True, text=True).stdout
+        out = subprocess.run(args, check=True, capture_output=True, text=True, env=env).stdout
         results.append(dict(line.split(": ", 1) for line in out.strip().splitlines()))
     r = dict(results[0])
     for key in ("wall time", "solve time", "assemble time"):
@@ -24,7 +31,7 @@ def run(settings, repeat=repeats):
 columns = ["case", "problem", "shape", "k", "refinement", "dofs", "solver", "scheme", "convection", "Re",
            "penalty factor", "tau", "velocity L2", "tangential L2", "gradient L2", "pressure L2", "normal L2",
            "energy change", "measured rate", "exact rate", "steps", "total iterations", "max iterations",
-           "factorizations", "assemble time", "solve time", "wall time"]
+           "factorizations", "assemble time", "solve time", "wall time", "threads", "aggregation threshold"]
 rows = []
 
 def record(case, settings, r):
@@ -36,7 +43,8 @@ def record(case, settings, r):
                                                              else " " + s.get("flow/direct solver", "Amesos_Klu")),
            "scheme": s.get("flow/time scheme", "BDF2"), "convection": s.get("flow/convection", "true"),
            "Re": s.get("flow/Re", "1"), "penalty factor": s.get("flow/penalty factor", "10"),
-           "tau": s.get("time stepping/time step", "")}
+           "tau": s.get("time stepping/time step", ""), "threads": s.get("threads", ""),
+           "aggregation threshold": s.get("flow/velocity AMG aggregation threshold", "")}
     for key, name in [("velocity", "velocity L2"), ("tangential", "tangential L2"), ("gradient", "gradient L2"),
                       ("pressure", "pressure L2"), ("normal", "normal L2")]:
         row[name] = r[key]
@@ -48,36 +56,55 @@ def record(case, settings, r):
                                        "energy change", "max iterations", "wall time")}, flush=True)
 
 max_ref = 3 if quick else 5
+solver_cases = ("stationary solver", "stationary solver theta", "threads", "time solver", "time solver no reuse")
+if solvers_only:
+    with open(os.path.join(outdir, "results.csv")) as f:
+        rows = [dict(r) for r in csv.DictReader(f) if r["case"] not in solver_cases]
+        for r in rows:
+            for c in columns:
+                r.setdefault(c, "")
 # 1. Manufactured stationary Stokes: convergence for k = 2, 3 on sphere and ellipsoid (direct solver).
-for shape in ("sphere", "ellipsoid"):
+for shape in ("sphere", "ellipsoid") if not solvers_only else ():
     for k in (2, 3):
         for ref in range(1, max_ref + 1):
             s = {"geometry/shape": shape, "geometry/refinement": ref, "geometry/position degree": k}
             if shape == "ellipsoid":
                 s.update({"geometry/semi-axes": "1.27,1.27,0.47", "fixed surface/problem": "manufactured ellipsoid"})
             record("convergence", s, run(s))
-# 2. Solvers on the stationary problem (sphere, k = 2): MUMPS and the block preconditioner.
-for solver in (("direct", "Amesos_Mumps"), ("block preconditioned", None)):
-    for ref in range(1, max_ref + 1):
-        s = {"geometry/shape": "sphere", "geometry/refinement": ref, "flow/linear solver": solver[0]}
-        if solver[1]:
-            s["flow/direct solver"] = solver[1]
-        record("stationary solver", s, run(s))
+# 2. Solvers on the stationary problem (sphere, k = 2 and 3): KLU, MUMPS and the block preconditioner
+#    (default aggregation threshold 1e-4; k = 2 also with the former 0.02), all in one session.
+for k in (2, 3):
+    for solver in (("direct", "Amesos_Klu"), ("direct", "Amesos_Mumps"), ("block preconditioned", None)):
+        for ref in range(1, max_ref + 1):
+            s = {"geometry/shape": "sphere", "geometry/refinement": ref, "geometry/position degree": k,
+                 "flow/linear solver": solver[0]}
+            if solver[1]:
+                s["flow/direct solver"] = solver[1]
+            record("stationary solver", s, run(s))
+for ref in range(1, max_ref + 1):
+    s = {"geometry/shape": "sphere", "geometry/refinement": ref, "flow/linear solver": "block preconditioned",
+         "flow/velocity AMG aggregation threshold": 0.02}
+    record("stationary solver theta", s, run(s, 1 if ref == 5 else repeats))
+# 2b. Threads in assembly (WorkStream): the same stationary problem with 1 and 2 threads.
+for threads in (1, 2):
+    s = {"geometry/shape": "sphere", "geometry/refinement": max_ref - 1}
+    r = run(s, threads=threads)
+    record("threads", {**s, "threads": threads}, r)
 # 3. Penalty choices (sphere, k = 2): exponent 2 vs 3, and the normal used.
-for ref in range(2, max_ref + 1):
+for ref in range(2, max_ref + 1) if not solvers_only else ():
     for extra in ({"flow/penalty exponent": 2}, {"flow/penalty normal": "continuous"}, {"flow/penalty normal": "cell"},
                   {"flow/penalty factor": 1000}):
         s = {"geometry/shape": "sphere", "geometry/refinement": ref, **extra}
         r = run(s, 1)
         record("penalty " + ",".join(f"{k.split('/')[1]}={v}" for k, v in extra.items()), s, r)
 # 4. Killing field, t in [0, 1], Re = 10, penalty factor 1000 and 10.
-for beta in (1000, 10):
+for beta in (1000, 10) if not solvers_only else ():
     for ref in range(2, (4 if quick else 5) + 1):
         s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface/problem": "killing",
              "flow/Re": 10, "flow/penalty factor": beta, "time stepping/time step": 0.05, "time stepping/end time": 1}
         record("killing", s, run(s, 1))
 # 5. Decaying modes l = 2, 3 with convection, Re = 10: h-convergence at tau = 0.0125, tau-convergence at ref 4.
-for l in (2, 3):
+for l in (2, 3) if not solvers_only else ():
     for ref in range(2, (3 if quick else 4) + 1):
         s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface/problem": "decaying mode",
              "fixed surface/mode number": l, "flow/Re": 10, "time stepping/time step": 0.0125,
@@ -113,10 +140,13 @@ def series(filter_fn):
     pts = [(float(r["wall time"]), float(r["gradient L2"])) for r in rows if filter_fn(r)]
     return zip(*sorted(pts)) if pts else ([], [])
 for label, fn, style in [
-        ("direct KLU, k=2", lambda r: r["case"] == "convergence" and r["shape"] == "sphere" and str(r["k"]) == "2", "o-"),
-        ("direct KLU, k=3", lambda r: r["case"] == "convergence" and r["shape"] == "sphere" and str(r["k"]) == "3", "s-"),
-        ("direct MUMPS, k=2", lambda r: r["case"] == "stationary solver" and "Mumps" in r["solver"], "^-"),
-        ("GMRES + block AMG, k=2", lambda r: r["case"] == "stationary solver" and r["solver"].startswith("block"), "d-")]:
+        ("direct KLU, k=2", lambda r: r["case"] == "stationary solver" and "Klu" in r["solver"] and str(r["k"]) == "2", "o-"),
+        ("direct KLU, k=3", lambda r: r["case"] == "stationary solver" and "Klu" in r["solver"] and str(r["k"]) == "3", "s--"),
+        ("direct MUMPS, k=2", lambda r: r["case"] == "stationary solver" and "Mumps" in r["solver"] and str(r["k"]) == "2", "^-"),
+        ("direct MUMPS, k=3", lambda r: r["case"] == "stationary solver" and "Mumps" in r["solver"] and str(r["k"]) == "3", "v--"),
+        ("GMRES + block AMG, k=2", lambda r: r["case"] == "stationary solver" and r["solver"].startswith("block") and str(r["k"]) == "2", "d-"),
+        ("GMRES + block AMG, k=3", lambda r: r["case"] == "stationary solver" and r["solver"].startswith("block") and str(r["k"]) == "3", "D--"),
+        ("GMRES + block AMG, k=2, θ=0.02", lambda r: r["case"] == "stationary solver theta", "x:")]:
     x, y = series(fn)
     ax.loglog(list(x), list(y), style, label=label)
 ax.set_xlabel("wall time [s] (median of %d)" % repeats)

@@ -112,6 +112,7 @@ namespace FluidSurface
       LinearSolver  solver               = LinearSolver::direct;
       std::string   direct_solver_name   = "Amesos_Klu";
       std::string   amg_smoother         = "symmetric block Gauss-Seidel"; ///< ML smoother of the velocity AMG
+      double        amg_aggregation_threshold = 1e-4; ///< ML aggregation threshold of the velocity AMG
       bool          reuse_factorization  = true;
       unsigned int  max_reuse_iterations = 10;
       double        tolerance            = 1e-10; ///< relative residual of Krylov solves
@@ -155,9 +156,11 @@ namespace FluidSurface
     /**
      * Distributes the Taylor–Hood DoFs and builds constraints and matrices. For
      * a stationary Stokes problem on a surface with Killing fields
-     * (rotations a × x that leave S invariant), pass the rotation axes: each
-     * is removed by fixing one velocity component at a node where it does not
-     * vanish, and the right-hand side is made orthogonal to them.
+     * (rotations a × x that leave S invariant), pass the rotation axes; the
+     * right-hand side is made orthogonal to them, and each is removed by
+     * fixing one velocity component at the velocity node nearest to a ray ⊥ a
+     * (where that rotation is largest); InputError if the mesh has no node
+     * near that ray.
      */
     void
     setup(const std::vector<dealii::Tensor<1, 3>> &killing_axes = {});
@@ -229,6 +232,9 @@ namespace FluidSurface
     copy_local_to_global(const CopyData &copy);
     void
     remove_killing_components_from_rhs();
+    /// The constraints fixing the Killing fields at one node per axis (direct solver).
+    void
+    pin_killing_fields();
     SolveInfo
     solve(const bool matrix_changed, const bool coefficients_changed);
     unsigned int

@@ -1,0 +1,50 @@
+// Stationary surface Stokes on the unit sphere (manufactured solution, Re = 1, Q2 geometry) with the
+// block-preconditioned GMRES (AMG on the velocity block, pressure mass matrix for the Schur complement):
+// the GMRES iterations at refinements 1..4 (deterministic at np = 1, one thread) must stay bounded, and
+// the velocity gradient error must equal the direct solver's to the solver tolerance. Then the
+// time-dependent Stokes decaying mode (mass term present), refinement 2 and 3: GMRES iterations per step.
+
+#include "flow_common.h"
+
+#include <algorithm>
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  unsigned int                             most = 0;
+  for (unsigned int r = 1; r <= 4; ++r)
+    {
+      const FlowTest::Overrides common = {{"geometry/shape", "sphere"},
+                                          {"geometry/refinement", std::to_string(r)},
+                                          {"fixed surface/problem", "manufactured sphere"}};
+      FlowTest::Overrides block = common;
+      block.push_back({"flow/linear solver", "block preconditioned"});
+      const auto direct = FlowTest::run(common);
+      const auto krylov = FlowTest::run(block);
+      most              = std::max(most, krylov.max_iterations);
+      if (FlowTest::is_root())
+        std::printf("stationary refinement %u  dofs %llu  GMRES iterations %u  grad_P u error %s  "
+                    "relative difference to direct %s\n",
+                    r, (unsigned long long)krylov.n_dofs, krylov.max_iterations,
+                    FlowTest::scientific(krylov.errors.gradient).c_str(),
+                    std::abs(krylov.errors.gradient / direct.errors.gradient - 1) < 1e-6 ? "below 1e-6" : "ABOVE 1e-6");
+    }
+  if (FlowTest::is_root())
+    std::printf("stationary: at most 50 GMRES iterations: %s\n", most <= 50 ? "yes" : "no");
+  for (unsigned int r = 2; r <= 3; ++r)
+    {
+      const auto result = FlowTest::run({{"geometry/shape", "sphere"},
+                                         {"geometry/refinement", std::to_string(r)},
+                                         {"fixed surface/problem", "decaying mode"},
+                                         {"flow/Re", "10"},
+                                         {"flow/convection", "false"},
+                                         {"flow/linear solver", "block preconditioned"},
+                                         {"time stepping/time step", "0.05"},
+                                         {"time stepping/end time", "0.5"}});
+      if (FlowTest::is_root())
+        std::printf("time-dependent Stokes refinement %u  steps %u  AMG setups %u  GMRES iterations %u total, %u max "
+                    "per step\n",
+                    r, result.steps, result.factorizations, result.total_iterations, result.max_iterations);
+    }
+}
