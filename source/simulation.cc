@@ -232,6 +232,11 @@ namespace FluidSurface
                   << " at a rate that does not fall with τ (space discretization); step accepted" << std::endl;
             time.set_step_size(tau_before_rejections);
           }
+        else if (previous_rate > 0 && rise > 0 && rise / tau > 0.5 * previous_rate)
+          // The retry after a rejection passed, but its rise rate rise/τ hardly fell with τ: the rejection
+          // did not remove a time-step error, so τ returns to its value before the rejections (otherwise
+          // a steady rise rate just below the tolerance shrinks τ towards τ_min, one rejection at a time).
+          time.set_step_size(tau_before_rejections);
         previous_rate = 0;
         model.accept();
         time.accept(tau);
