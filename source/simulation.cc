@@ -166,12 +166,14 @@ namespace FluidSurface
   {
     model.setup();
     model.set_timer(computing_timer);
-    // The timing is written however the run ends (a failed run's timing shows where it spent its time).
+    // The timing is written however the run ends (a failed run's timing shows where it spent its time),
+    // and the factorization kept across steps is freed.
     struct TimingAtExit
     {
       Simulation &simulation;
       ~TimingAtExit()
       {
+        simulation.model.release_factorization();
         try
           {
             simulation.write_timing();

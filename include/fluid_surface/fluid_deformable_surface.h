@@ -201,6 +201,13 @@ namespace FluidSurface
     {
       return factorization_count;
     }
+    /// Frees the kept LU factorization (MUMPS) while the rest of the program is still alive.
+    void
+    release_factorization()
+    {
+      factorization.reset();
+      refactorize_next = true;
+    }
     /// Whether ∂_t u is assembled (false: the Stokes limit, whose energy F is the bending energy alone).
     bool
     has_inertia() const
