@@ -6,6 +6,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/data_postprocessor.h>
 #include <deal.II/numerics/vector_tools.h>
@@ -139,6 +140,16 @@ namespace FluidSurface
                       "Amplitude ε_X of a smooth seeded random radial displacement of the initial shape.");
     prm.declare_entry("random seed", "1", Patterns::Integer(0), "Seed of the perturbations (same on every rank).");
     prm.leave_subsection();
+    prm.enter_subsection("flow");
+    prm.declare_entry("rigid motion regularization",
+                      "1e-6",
+                      Patterns::Double(0),
+                      "Scene full with inertia = false (Stokes limit): ε of the term ε(u, v) that makes the "
+                      "step matrix invertible on the rigid motions (translations and rotations dissipate "
+                      "nothing and, without the mass term, nothing else fixes them). Their amplitude is "
+                      "then set exactly by the multipliers of ∫u = 0 and ∫x × u = 0; ε only adds the "
+                      "dissipation ε‖u‖² to the other modes (relative size ε·Re/2).");
+    prm.leave_subsection();
   }
 
   void
@@ -154,6 +165,14 @@ namespace FluidSurface
     flow.reynolds_number = prm.get_double("Re");
     flow.inertia         = prm.get_bool("inertia");
     flow.convection      = prm.get_bool("convection") && flow.inertia;
+    linear_solver.reuse_factorization       = prm.get_bool("reuse factorization");
+    linear_solver.refactorization_threshold = prm.get_integer("max reuse iterations");
+    linear_solver.tolerance                 = prm.get_double("linear solver tolerance");
+    stokes_regularization                   = prm.get_double("rigid motion regularization");
+    if (!flow.inertia && !(stokes_regularization > 0))
+      throw_invalid_entry("flow/rigid motion regularization",
+                          prm.get("rigid motion regularization"),
+                          "ε > 0 when inertia = false (the step matrix is singular on rigid motions otherwise)");
     prm.leave_subsection();
     prm.enter_subsection("initial state");
     initial_angular_velocity = prm.get_double("angular velocity");
@@ -179,11 +198,6 @@ namespace FluidSurface
     shape_noise    = prm.get_double("shape perturbation");
     random_seed    = prm.get_integer("random seed");
     prm.leave_subsection();
-    if (!flow.inertia)
-      throw_invalid_entry("flow/inertia",
-                          "false",
-                          "inertia = true in scene full (the Stokes limit of the moving surface needs the "
-                          "rigid-motion null space removed, which is not implemented yet)");
   }
 
   namespace
@@ -305,6 +319,10 @@ namespace FluidSurface
     system_matrix.reinit(owned, owned, dsp, geometry.get_communicator());
     system_rhs.reinit(owned, geometry.get_communicator());
     volume_column.reinit(owned, geometry.get_communicator());
+    for (auto &column : rigid_columns)
+      column.reinit(owned, geometry.get_communicator());
+    factorization.reset();
+    refactorize_next = true;
     current.reinit(owned, relevant, geometry.get_communicator());
     candidate.reinit(owned, relevant, geometry.get_communicator());
 
@@ -426,7 +444,50 @@ namespace FluidSurface
     {
       FullMatrix<double>                   matrix;
       Vector<double>                       rhs, volume_column;
+      std::array<Vector<double>, 6>        rigid;
       std::vector<types::global_dof_index> indices;
+    };
+
+    /// A TimerOutput section for the lifetime of the object (nothing without a timer).
+    class TimerSection
+    {
+    public:
+      TimerSection(TimerOutput *timer, const std::string &name)
+        : timer(timer)
+        , name(name)
+      {
+        if (timer)
+          timer->enter_subsection(name);
+      }
+      ~TimerSection()
+      {
+        if (timer)
+          timer->leave_subsection(name);
+      }
+      TimerSection(const TimerSection &) = delete;
+      TimerSection &
+      operator=(const TimerSection &) = delete;
+
+    private:
+      TimerOutput *timer;
+      std::string  name;
+    };
+
+    /// An LU factorization of a nearby matrix as a preconditioner.
+    class FactorizationPreconditioner
+    {
+    public:
+      explicit FactorizationPreconditioner(TrilinosWrappers::SolverDirect &lu)
+        : lu(lu)
+      {}
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        lu.solve(dst, src);
+      }
+
+    private:
+      TrilinosWrappers::SolverDirect &lu;
     };
   } // namespace
 
@@ -436,6 +497,10 @@ namespace FluidSurface
     system_matrix = 0;
     system_rhs    = 0;
     volume_column = 0;
+    for (auto &column : rigid_columns)
+      column = 0;
+    const bool   stokes         = !flow.inertia;
+    const double regularization = stokes ? stokes_regularization : 0.0;
 
     const SurfaceGeometry::Measures m = geometry.measure();
     // div_P u = s with s = −(A^m − A₀)/(τ_c A^m) returns any area drift (∫div_P u = dA/dt);
@@ -460,6 +525,9 @@ namespace FluidSurface
       copy.matrix.reinit(n, n);
       copy.rhs.reinit(n);
       copy.volume_column.reinit(n);
+      if (stokes)
+        for (auto &column : copy.rigid)
+          column.reinit(n);
       copy.indices.resize(n);
       cell->get_dof_indices(copy.indices);
       typename DoFHandler<2, 3>::active_cell_iterator geo_cell(&geometry.triangulation(),
@@ -520,6 +588,14 @@ namespace FluidSurface
                   if (flow.convection)
                     copy.rhs(i) -= inv_tau * (grad_u_x * phi_u[i]) * dA;
                   copy.volume_column(i) += (phi_u[i] * normal[q]) * dA;
+                  if (stokes)
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        // (r, v) for r = e_d and r = e_d × x: ∫u and ∫x × u against the multipliers.
+                        copy.rigid[d](i) += phi_u[i][d] * dA;
+                        copy.rigid[3 + d](i) +=
+                          (cross_product_3d(Tensor<1, 3>(Point<3>::unit_vector(d)), x_m) * phi_u[i]) * dA;
+                      }
                   for (unsigned int j = 0; j < n; ++j)
                     {
                       const unsigned int cj = fe->system_to_component_index(j).first;
@@ -529,6 +605,8 @@ namespace FluidSurface
                           a += viscosity * scalar_product(sigma_u[i], sigma_u[j]);
                           if (flow.inertia)
                             a += inv_tau * (phi_u[i] * phi_u[j]);
+                          else
+                            a += regularization * (phi_u[i] * phi_u[j]);
                           // (∇_w u, v). Its skew-symmetric form ½[(∇u w, v) − (∇v w, u)] is
                           // inconsistent on a deforming surface (it drops ½(div_S(Pw) u, v), and
                           // div_S(Pw) = H u·ν ≠ 0), and costs angular momentum.
@@ -623,6 +701,9 @@ namespace FluidSurface
     auto copier = [&](const CopyData &copy) {
       constraints.distribute_local_to_global(copy.matrix, copy.rhs, copy.indices, system_matrix, system_rhs);
       constraints.distribute_local_to_global(copy.volume_column, copy.indices, volume_column);
+      if (stokes)
+        for (unsigned int k = 0; k < 6; ++k)
+          constraints.distribute_local_to_global(copy.rigid[k], copy.indices, rigid_columns[k]);
     };
 
     using Iterator = typename DoFHandler<2, 3>::active_cell_iterator;
@@ -635,36 +716,124 @@ namespace FluidSurface
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
     volume_column.compress(VectorOperation::add);
+    if (stokes)
+      for (auto &column : rigid_columns)
+        column.compress(VectorOperation::add);
+  }
+
+  void
+  FluidDeformableSurface::factorize()
+  {
+    TimerSection section(step_timer, "factorization");
+    factorization = std::make_unique<TrilinosWrappers::SolverDirect>(
+      factorization_control, TrilinosWrappers::SolverDirect::AdditionalData(false, direct_solver));
+    factorization->initialize(system_matrix);
+    factorization_current = true;
+    refactorize_next      = false;
+    ++factorization_count;
+  }
+
+  unsigned int
+  FluidDeformableSurface::solve_system(VectorType &x, const VectorType &b)
+  {
+    TimerSection section(step_timer, "linear solve");
+    if (factorization_current)
+      {
+        factorization->solve(x, b);
+        return 0;
+      }
+    // Right preconditioning: GMRES measures the true residual ‖b − Ax‖.
+    SolverControl                           control(linear_solver.refactorization_threshold,
+                                  linear_solver.tolerance * b.l2_norm());
+    SolverGMRES<VectorType>::AdditionalData data(linear_solver.refactorization_threshold + 2, true);
+    SolverGMRES<VectorType>                 gmres(control, data);
+    gmres.solve(system_matrix, x, b, FactorizationPreconditioner(*factorization));
+    return control.last_step();
   }
 
   FluidDeformableSurface::StepResult
   FluidDeformableSurface::advance(const double tau)
   {
     StepResult result;
-    assemble(tau);
+    {
+      TimerSection section(step_timer, "assembly");
+      assemble(tau);
+    }
 
-    const MPI_Comm comm = geometry.get_communicator();
-    VectorType     x1(owned, comm), x2(owned, comm);
+    // Bordering: the global constraints c_k·x = g_k with multipliers μ_k (force μ_k c_k in the
+    // momentum rows): the volume row (u·ñ, 1) = −(V^m − V₀)/τ_c (μ = γ) and, in the Stokes limit,
+    // ∫u = 0, ∫x × u = 0. With x_b = A⁻¹b and x_k = A⁻¹c_k: Σ_k (c_j·x_k) μ_k = c_j·x_b − g_j.
+    std::vector<const VectorType *> columns;
+    std::vector<double>             rates;
+    if (volume_constraint.enabled)
+      {
+        columns.push_back(&volume_column);
+        rates.push_back(-(geometry.measure().volume - target_volume) / drift_time(tau));
+      }
+    if (!flow.inertia)
+      for (const auto &column : rigid_columns)
+        {
+          columns.push_back(&column);
+          rates.push_back(0.0);
+        }
+
+    const MPI_Comm          comm = geometry.get_communicator();
+    VectorType              x1(owned, comm);
+    std::vector<VectorType> xk(columns.size(), VectorType(owned, comm));
     try
       {
-        SolverControl                                control(1, 0);
-        TrilinosWrappers::SolverDirect::AdditionalData data(false, direct_solver);
-        TrilinosWrappers::SolverDirect                 solver(control, data);
-        solver.initialize(system_matrix);
-        solver.solve(x1, system_rhs);
-        if (volume_constraint.enabled)
+        factorization_current = false;
+        if (!factorization || !linear_solver.reuse_factorization || refactorize_next)
+          factorize();
+        // An old factorization preconditions GMRES; when GMRES needs more than the threshold,
+        // this step's matrix is factorized and the solve repeated directly.
+        last_solves.resize(columns.size() + 1, VectorType(owned, comm));
+        auto solve = [&](VectorType &x, const VectorType &b, VectorType &last) {
+          try
+            {
+              x = last;
+              result.linear_iterations += solve_system(x, b);
+            }
+          catch (const SolverControl::NoConvergence &)
+            {
+              result.linear_iterations += linear_solver.refactorization_threshold;
+              factorize();
+              solve_system(x, b);
+            }
+          last = x;
+        };
+        solve(x1, system_rhs, last_solves[0]);
+        for (unsigned int k = 0; k < columns.size(); ++k)
+          solve(xk[k], *columns[k], last_solves[k + 1]);
+        result.factorized = factorization_current;
+        if (!columns.empty())
           {
-            solver.solve(x2, volume_column);
-            // Bordering: γ from the constraint row (u·ñ, 1) = −(V^m − V₀)/τ.
-            const double volume_rate = -(geometry.measure().volume - target_volume) / drift_time(tau);
-            result.gamma             = (volume_column * x1 - volume_rate) / (volume_column * x2);
-            x1.add(-result.gamma, x2);
+            const unsigned int nc = columns.size();
+            FullMatrix<double> schur(nc, nc);
+            Vector<double>     residual(nc), mu(nc);
+            for (unsigned int j = 0; j < nc; ++j)
+              {
+                residual(j) = (*columns[j]) * x1 - rates[j];
+                for (unsigned int k = 0; k < nc; ++k)
+                  schur(j, k) = (*columns[j]) * xk[k];
+              }
+            schur.gauss_jordan();
+            schur.vmult(mu, residual);
+            for (unsigned int k = 0; k < nc; ++k)
+              x1.add(-mu(k), xk[k]);
+            const unsigned int first_rigid = volume_constraint.enabled ? 1 : 0;
+            if (volume_constraint.enabled)
+              result.gamma = mu(0);
+            double rigid = 0;
+            for (unsigned int k = first_rigid; k < nc; ++k)
+              rigid += mu(k) * mu(k);
+            result.rigid_force = std::sqrt(rigid);
           }
-        result.linear_iterations = 1;
       }
     catch (const std::exception &exc)
       {
-        result.failure = std::string("direct solver failed: ") + exc.what();
+        refactorize_next = true;
+        result.failure   = std::string("linear solver failed: ") + exc.what();
         return result;
       }
     if (!std::isfinite(x1.l2_norm()))
@@ -673,8 +842,11 @@ namespace FluidSurface
         return result;
       }
     constraints.distribute(x1);
-    candidate               = x1;
-    result.dissipation_rate = dissipation_rate(candidate);
+    candidate = x1;
+    {
+      TimerSection section(step_timer, "diagnostics");
+      result.dissipation_rate = dissipation_rate(candidate);
+    }
     copy_new_position_to_geometry(candidate);
     last_step_tau = tau;
     result.solved = true;
@@ -697,6 +869,7 @@ namespace FluidSurface
     position = current_position;
     geometry.set_position(position);
     geometry.compute_curvature();
+    refactorize_next = true;
   }
 
   double

@@ -17,6 +17,7 @@ namespace FluidSurface
   Simulation::Simulation(const MPI_Comm communicator)
     : communicator(communicator)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
+    , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , geometry(communicator)
     , model(geometry)
   {}
@@ -133,10 +134,12 @@ namespace FluidSurface
                                      const double                              willmore,
                                      const FluidDeformableSurface::StepResult &step)
   {
+    TimerOutput::Scope        section(computing_timer, "diagnostics");
     const Diagnostics::Values v = diagnostics.evaluate(geometry, model.dof_handler(), model.solution());
     diagnostics.record(v, time.time(), tau);
     const double bending_energy = model.bending_energy(willmore);
-    total_energy                = v.kinetic_energy + bending_energy;
+    // The Stokes limit has no kinetic energy: F is the bending energy alone.
+    total_energy = (model.has_inertia() ? v.kinetic_energy : 0.0) + bending_energy;
 
     statistics.add_value("time step", time.step_number());
     statistics.add_value("time", time.time());
@@ -148,6 +151,8 @@ namespace FluidSurface
     diagnostics.add_to_statistics(v, statistics);
     statistics.add_value("volume multiplier", step.gamma);
     statistics.add_value("linear iterations", step.linear_iterations);
+    statistics.add_value("factorized", step.factorized ? 1 : 0);
+    statistics.add_value("rigid multiplier", step.rigid_force);
     statistics.add_value("wall time", elapsed_wall_time());
     statistics.end_row();
 
@@ -179,6 +184,23 @@ namespace FluidSurface
   void
   Simulation::run_full_model(const bool resuming)
   {
+    model.set_timer(computing_timer);
+    // The timing is written however the run ends (a failed run's timing shows where it spent its time),
+    // and the factorization kept across steps is freed.
+    struct TimingAtExit
+    {
+      Simulation &simulation;
+      ~TimingAtExit()
+      {
+        simulation.model.release_factorization();
+        try
+          {
+            simulation.write_timing();
+          }
+        catch (...)
+          {}
+      }
+    } timing_at_exit{*this};
     double       previous_rate  = 0;
     double       tau_before_rejections = 0;
     unsigned int n_energy_rises = 0;
@@ -214,14 +236,16 @@ namespace FluidSurface
           }
         std::ostringstream report;
         diagnostics.set_reference(diagnostics.initial_values(), model.bending_number(), report);
-        pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ\n"
+        pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ"
+              << (model.has_inertia() ? "" : " (Stokes limit: + 6 rigid-motion multipliers)") << '\n'
               << report.str() << "-- resumed from " << checkpoint.last_slot() << ": step " << time.step_number()
               << ", t = " << time.time() << std::endl;
       }
     else
       {
         model.setup();
-        pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ" << std::endl;
+        pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ"
+              << (model.has_inertia() ? "" : " (Stokes limit: + 6 rigid-motion multipliers)") << std::endl;
         std::ostringstream report;
         diagnostics.set_reference(diagnostics.evaluate(geometry, model.dof_handler(), model.solution()),
                                   model.bending_number(),
@@ -229,6 +253,7 @@ namespace FluidSurface
         pcout << report.str() << std::flush;
         willmore = geometry.compute_curvature();
         record_full_model_step(0.0, willmore, FluidDeformableSurface::StepResult());
+        TimerOutput::Scope section(computing_timer, "output");
         output.write(geometry, time.time(), [&](DataOut<2, 3> &data_out) { model.add_output_fields(data_out); });
       }
 
@@ -273,9 +298,12 @@ namespace FluidSurface
             time.reject(step.failure);
             continue;
           }
+        computing_timer.enter_subsection("curvature and energy");
         const double new_willmore = geometry.compute_curvature();
         const double new_energy =
-          model.kinetic_energy(model.candidate_solution()) + model.bending_energy(new_willmore);
+          (model.has_inertia() ? model.kinetic_energy(model.candidate_solution()) : 0.0) +
+          model.bending_energy(new_willmore);
+        computing_timer.leave_subsection("curvature and energy");
         const double rise = new_energy - total_energy;
         if (!time.energy_acceptable(total_energy, new_energy, tau))
           {
@@ -300,6 +328,11 @@ namespace FluidSurface
                   << " at a rate that does not fall with τ (space discretization); step accepted" << std::endl;
             time.set_step_size(tau_before_rejections);
           }
+        else if (previous_rate > 0 && rise > 0 && rise / tau > 0.5 * previous_rate)
+          // The retry after a rejection passed, but its rise rate rise/τ hardly fell with τ: the rejection
+          // did not remove a time-step error, so τ returns to its value before the rejections (otherwise
+          // a steady rise rate just below the tolerance shrinks τ towards τ_min, one rejection at a time).
+          time.set_step_size(tau_before_rejections);
         previous_rate = 0;
         model.accept();
         time.accept(tau);
@@ -315,7 +348,10 @@ namespace FluidSurface
             throw std::runtime_error(msg.str());
           }
         if (output.due(time.time()) || !time.before_end())
-          output.write(geometry, time.time(), [&](DataOut<2, 3> &data_out) { model.add_output_fields(data_out); });
+          {
+            TimerOutput::Scope section(computing_timer, "output");
+            output.write(geometry, time.time(), [&](DataOut<2, 3> &data_out) { model.add_output_fields(data_out); });
+          }
 
         ++steps_this_run;
         const int  signal = checkpoint.received_signal();
@@ -356,18 +392,45 @@ namespace FluidSurface
           diagnostics.write_summary(summary, total_energy, time.step_number(), time.n_rejected_steps(),
                                     elapsed_wall_time());
           summary << "energy rises accepted: " << n_energy_rises << '\n';
+          summary << "LU factorizations: " << model.n_factorizations() << '\n';
         }
         std::filesystem::rename(output.directory() + "summary.tmp", output.directory() + "summary");
         std::ostringstream text;
         diagnostics.write_summary(text, total_energy, time.step_number(), time.n_rejected_steps(),
                                   elapsed_wall_time());
         text << "energy rises accepted: " << n_energy_rises << '\n';
+        text << "LU factorizations: " << model.n_factorizations() << '\n';
         std::istringstream lines(text.str());
         std::cout << "--- summary\n";
         for (std::string line; std::getline(lines, line);)
           if (output.report_wall_time() || line.rfind("wall time", 0) != 0)
             std::cout << line << '\n';
         std::cout << std::flush;
+      }
+  }
+
+  void
+  Simulation::write_timing()
+  {
+    const auto wall  = computing_timer.get_summary_data(TimerOutput::total_wall_time);
+    const auto calls = computing_timer.get_summary_data(TimerOutput::n_calls);
+    const double total = wall_timer.wall_time();
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::ofstream file(output.directory() + "timing");
+        file << "# section, calls, wall time [s], share of the run, wall time per accepted step [s]\n"
+             << "# run: " << total << " s, " << time.step_number() << " accepted steps, "
+             << time.n_rejected_steps() << " rejected, " << model.n_factorizations() << " LU factorizations\n";
+        for (const auto &entry : wall)
+          file << '"' << entry.first << "\", " << calls.at(entry.first) << ", " << entry.second << ", "
+               << entry.second / total << ", " << entry.second / std::max(1u, time.step_number()) << '\n';
+      }
+    if (output.report_wall_time())
+      {
+        pcout << "--- wall time per section (" << std::setprecision(4) << total / std::max(1u, time.step_number())
+              << " s per accepted step, " << model.n_factorizations() << " LU factorizations in "
+              << time.step_number() + time.n_rejected_steps() << " step attempts)\n";
+        computing_timer.print_summary();
       }
   }
 } // namespace FluidSurface

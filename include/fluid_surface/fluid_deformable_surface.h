@@ -4,6 +4,7 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -13,6 +14,7 @@
 
 #include <fluid_surface/surface_geometry.h>
 
+#include <array>
 #include <memory>
 #include <random>
 #include <string>
@@ -88,6 +90,20 @@ namespace FluidSurface
   };
 
   /**
+   * How the linear system of a step is solved: a sparse LU factorization
+   * (Amesos MUMPS), reused over the following steps as the right
+   * preconditioner of GMRES on their (slightly different) matrices. The
+   * matrix is factorized again when a GMRES solve needs more than
+   * `refactorization threshold` iterations, fails, or after a rejected step.
+   */
+  struct LinearSolverParameters
+  {
+    bool         reuse_factorization       = true;
+    unsigned int refactorization_threshold = 10;    ///< GMRES iterations per solve
+    double       tolerance                 = 1e-10; ///< relative residual of a GMRES solve
+  };
+
+  /**
    * The fluid deformable surface (seed eqs. 1–4): the full 3D velocity u ∈ [Q2]³,
    * surface pressure p ∈ Q1, curvature κ and bending scalar y ∈ Q_k, the new
    * position Y ∈ [Q_k]³ and the volume multiplier γ, solved as one linear
@@ -105,6 +121,8 @@ namespace FluidSurface
       unsigned int linear_iterations = 0;
       double       gamma             = 0;
       double       dissipation_rate  = 0; ///< (2/Re)‖σ(u)‖² on S^m
+      bool         factorized        = false; ///< whether this step computed a new factorization
+      double       rigid_force       = 0; ///< Stokes limit: |λ| of the multipliers of ∫u = 0, ∫X×u = 0
     };
 
     FluidDeformableSurface(SurfaceGeometry &geometry);
@@ -180,6 +198,32 @@ namespace FluidSurface
       return redistribution.mesh_quality_floor;
     }
 
+    /// Sections "assembly", "factorization", "linear solve", "diagnostics" of advance() go to @p timer.
+    void
+    set_timer(dealii::TimerOutput &timer)
+    {
+      step_timer = &timer;
+    }
+    /// Number of LU factorizations so far.
+    unsigned int
+    n_factorizations() const
+    {
+      return factorization_count;
+    }
+    /// Frees the kept LU factorization (MUMPS) while the rest of the program is still alive.
+    void
+    release_factorization()
+    {
+      factorization.reset();
+      refactorize_next = true;
+    }
+    /// Whether ∂_t u is assembled (false: the Stokes limit, whose energy F is the bending energy alone).
+    bool
+    has_inertia() const
+    {
+      return flow.inertia;
+    }
+
     /// Adds u, |u| and p to a DataOut.
     void
     add_output_fields(dealii::DataOut<2, 3> &data_out) const;
@@ -229,6 +273,16 @@ namespace FluidSurface
     /// (2/Re)‖σ(u)‖² of @p state on the current surface.
     double
     dissipation_rate(const VectorType &state) const;
+    /// Factorizes system_matrix (Amesos MUMPS keeps its own copy of the factors).
+    void
+    factorize();
+    /**
+     * Solves A x = b with the current factorization: directly if it is of this
+     * step's matrix, otherwise by preconditioned GMRES from the initial guess x. Returns the GMRES
+     * iterations; throws SolverControl::NoConvergence when GMRES fails.
+     */
+    unsigned int
+    solve_system(VectorType &x, const VectorType &b);
 
     SurfaceGeometry &geometry;
 
@@ -268,6 +322,20 @@ namespace FluidSurface
     double                                 target_area   = 0;
     bool                                   area_correction = true;
     double                                 drift_correction_time = 0.01;
+
+    LinearSolverParameters                          linear_solver;
+    dealii::SolverControl                           factorization_control;
+    std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> factorization;
+    bool                                            factorization_current = false; ///< of this step's matrix
+    bool                                            refactorize_next      = true;
+    unsigned int                                    factorization_count   = 0;
+    dealii::TimerOutput                            *step_timer            = nullptr;
+    /// Stokes limit: ε of the regularization ε(u, v) and the columns (r_k, v) of the rigid motions
+    /// r = e_1, e_2, e_3, e_1 × x, e_2 × x, e_3 × x, whose multipliers enforce ∫u = 0, ∫x × u = 0.
+    double                                          stokes_regularization = 1e-6;
+    std::array<VectorType, 6>                       rigid_columns;
+    /// A⁻¹b and A⁻¹c_k of the last step: the initial guesses of the GMRES solves.
+    std::vector<VectorType>                         last_solves;
     /// The relaxation time τ_c = max(τ, τ_drift) of the area and volume drift corrections.
     double
     drift_time(const double tau) const

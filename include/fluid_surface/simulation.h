@@ -68,10 +68,17 @@ namespace FluidSurface
     /// One statistics row and screen report of the full model's accepted state.
     void
     record_full_model_step(const double tau, const double willmore, const FluidDeformableSurface::StepResult &step);
+    /// Writes the wall time per section (file `timing`; the screen if `report wall time`).
+    void
+    write_timing();
 
     MPI_Comm                   communicator;
     dealii::ConditionalOStream pcout;
     dealii::Timer              wall_timer;
+    /// Wall time per section of a full-model run: assembly, factorization, linear solve, curvature and
+    /// energy, diagnostics, output. Printed at the end when `output/report wall time` is on; always
+    /// written to the file `timing` of the output directory.
+    dealii::TimerOutput computing_timer;
 
     Scene           scene = Scene::geometry;
     SurfaceGeometry geometry;
