@@ -142,8 +142,8 @@ namespace FluidSurface
                       "force Σμ_k r_k for the rigid motions r = e_d, e_d × x (the same columns as the Stokes "
                       "limit). The continuous model conserves both exactly; without the multipliers the "
                       "discrete model loses angular momentum while the shape deforms fast (the prolate "
-                      "equilibrium perturbed by 2e-2, refinement 3: 11 % of L by the time F fell by 10 %, "
-                      "nearly the same at τ/4). |μ| is the statistics column 'rigid multiplier'.");
+                      "equilibrium perturbed by 2e-2, refinement 3: 11 % of L by the time F has fallen by 10 % "
+                      "with τ ≤ 0.05, still 8 % with τ ≤ 0.0125: mostly a space-discretization error). |μ| is the statistics column 'rigid multiplier'.");
     prm.declare_entry("rigid motion regularization",
                       "1e-6",
                       Patterns::Double(0),
