@@ -141,6 +141,16 @@ namespace FluidSurface
     prm.declare_entry("random seed", "1", Patterns::Integer(0), "Seed of the perturbations (same on every rank).");
     prm.leave_subsection();
     prm.enter_subsection("flow");
+    prm.declare_entry("conserve momenta",
+                      "false",
+                      Patterns::Bool(),
+                      "With inertia: keep the linear and angular momenta ∫u = P₀ and ∫x × u = L₀ (about the "
+                      "origin, P₀ and L₀ of the initial state) at every step by six global multipliers μ_k, "
+                      "force Σμ_k r_k for the rigid motions r = e_d, e_d × x (the same columns as the Stokes "
+                      "limit). The continuous model conserves both exactly; without the multipliers the "
+                      "discrete model loses angular momentum while the shape deforms fast (the prolate "
+                      "equilibrium perturbed by 2e-2, refinement 3: 11 % of L by the time F has fallen by 10 % "
+                      "with τ ≤ 0.05, still 8 % with τ ≤ 0.0125: mostly a space-discretization error). |μ| is the statistics column 'rigid multiplier'.");
     prm.declare_entry("rigid motion regularization",
                       "1e-6",
                       Patterns::Double(0),
@@ -165,6 +175,7 @@ namespace FluidSurface
     flow.reynolds_number = prm.get_double("Re");
     flow.inertia         = prm.get_bool("inertia");
     flow.convection      = prm.get_bool("convection") && flow.inertia;
+    flow.conserve_momenta = prm.get_bool("conserve momenta") && flow.inertia;
     linear_solver.reuse_factorization       = prm.get_bool("reuse factorization");
     linear_solver.refactorization_threshold = prm.get_integer("max reuse iterations");
     linear_solver.tolerance                 = prm.get_double("linear solver tolerance");
@@ -290,6 +301,8 @@ namespace FluidSurface
       initial_angular_velocity = geometry.equilibrium_shape()->angular_velocity();
     setup_dofs();
     set_initial_velocity();
+    if (flow.conserve_momenta)
+      rigid_targets = rigid_momenta(current);
     const SurfaceGeometry::Measures m = geometry.measure();
     target_volume                     = m.volume;
     target_area                       = m.area;
@@ -500,6 +513,7 @@ namespace FluidSurface
     for (auto &column : rigid_columns)
       column = 0;
     const bool   stokes         = !flow.inertia;
+    const bool   rigid          = rigid_constraints();
     const double regularization = stokes ? stokes_regularization : 0.0;
 
     const SurfaceGeometry::Measures m = geometry.measure();
@@ -525,7 +539,7 @@ namespace FluidSurface
       copy.matrix.reinit(n, n);
       copy.rhs.reinit(n);
       copy.volume_column.reinit(n);
-      if (stokes)
+      if (rigid)
         for (auto &column : copy.rigid)
           column.reinit(n);
       copy.indices.resize(n);
@@ -588,7 +602,7 @@ namespace FluidSurface
                   if (flow.convection)
                     copy.rhs(i) -= inv_tau * (grad_u_x * phi_u[i]) * dA;
                   copy.volume_column(i) += (phi_u[i] * normal[q]) * dA;
-                  if (stokes)
+                  if (rigid)
                     for (unsigned int d = 0; d < 3; ++d)
                       {
                         // (r, v) for r = e_d and r = e_d × x: ∫u and ∫x × u against the multipliers.
@@ -701,7 +715,7 @@ namespace FluidSurface
     auto copier = [&](const CopyData &copy) {
       constraints.distribute_local_to_global(copy.matrix, copy.rhs, copy.indices, system_matrix, system_rhs);
       constraints.distribute_local_to_global(copy.volume_column, copy.indices, volume_column);
-      if (stokes)
+      if (rigid)
         for (unsigned int k = 0; k < 6; ++k)
           constraints.distribute_local_to_global(copy.rigid[k], copy.indices, rigid_columns[k]);
     };
@@ -716,7 +730,7 @@ namespace FluidSurface
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
     volume_column.compress(VectorOperation::add);
-    if (stokes)
+    if (rigid)
       for (auto &column : rigid_columns)
         column.compress(VectorOperation::add);
   }
@@ -751,6 +765,35 @@ namespace FluidSurface
     return control.last_step();
   }
 
+  std::array<double, 6>
+  FluidDeformableSurface::rigid_momenta(const VectorType &state) const
+  {
+    const QGauss<2>                  q(fe->degree + 1);
+    FEValues<2, 3>                   fe_values(geometry.mapping(), *fe, q,
+                                               update_values | update_quadrature_points | update_JxW_values);
+    const FEValuesExtractors::Vector velocity(velocity_component);
+    std::vector<Tensor<1, 3>>        u(q.size());
+    std::array<double, 6>            momenta = {{0, 0, 0, 0, 0, 0}};
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[velocity].get_function_values(state, u);
+          for (unsigned int k = 0; k < q.size(); ++k)
+            {
+              const Tensor<1, 3> L = cross_product_3d(fe_values.quadrature_point(k), u[k]);
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  momenta[d] += u[k][d] * fe_values.JxW(k);
+                  momenta[3 + d] += L[d] * fe_values.JxW(k);
+                }
+            }
+        }
+    Utilities::MPI::sum(ArrayView<const double>(momenta.data(), 6), geometry.get_communicator(),
+                        ArrayView<double>(momenta.data(), 6));
+    return momenta;
+  }
+
   FluidDeformableSurface::StepResult
   FluidDeformableSurface::advance(const double tau)
   {
@@ -770,11 +813,11 @@ namespace FluidSurface
         columns.push_back(&volume_column);
         rates.push_back(-(geometry.measure().volume - target_volume) / drift_time(tau));
       }
-    if (!flow.inertia)
-      for (const auto &column : rigid_columns)
+    if (rigid_constraints())
+      for (unsigned int k = 0; k < rigid_columns.size(); ++k)
         {
-          columns.push_back(&column);
-          rates.push_back(0.0);
+          columns.push_back(&rigid_columns[k]);
+          rates.push_back(rigid_targets[k]);
         }
 
     const MPI_Comm          comm = geometry.get_communicator();

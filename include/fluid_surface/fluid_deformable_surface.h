@@ -87,6 +87,7 @@ namespace FluidSurface
     double reynolds_number = 1.0; ///< Re = ρUL/η
     bool   inertia         = true; ///< ∂_t u (the Stokes limit drops it)
     bool   convection      = true; ///< ∇_w u with w = u − ∂_t X
+    bool   conserve_momenta = false; ///< multipliers keep ∫u = P₀ and ∫x × u = L₀ (with inertia)
   };
 
   /**
@@ -258,6 +259,9 @@ namespace FluidSurface
     load(const CheckpointData &data);
 
   private:
+    /// ∫u and ∫x × u (about the origin) of @p state on the current surface: the values (r_k, u).
+    std::array<double, 6>
+    rigid_momenta(const VectorType &state) const;
     void
     setup_dofs();
     void
@@ -334,6 +338,15 @@ namespace FluidSurface
     /// r = e_1, e_2, e_3, e_1 × x, e_2 × x, e_3 × x, whose multipliers enforce ∫u = 0, ∫x × u = 0.
     double                                          stokes_regularization = 1e-6;
     std::array<VectorType, 6>                       rigid_columns;
+    /// Values g_k of the rigid-motion constraints (r_k, u) = g_k: 0 in the Stokes limit, the initial
+    /// ∫u and ∫x × u with `conserve momenta`.
+    std::array<double, 6> rigid_targets = {{0, 0, 0, 0, 0, 0}};
+    /// Whether the rigid-motion multipliers are part of the step.
+    bool
+    rigid_constraints() const
+    {
+      return !flow.inertia || flow.conserve_momenta;
+    }
     /// A⁻¹b and A⁻¹c_k of the last step: the initial guesses of the GMRES solves.
     std::vector<VectorType>                         last_solves;
     /// The relaxation time τ_c = max(τ, τ_drift) of the area and volume drift corrections.
