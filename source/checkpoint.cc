@@ -435,9 +435,12 @@ namespace FluidSurface
                       Patterns::Selection("true|false|auto"),
                       "Continue the run from the last good checkpoint in the output directory. true: a "
                       "usable checkpoint must exist; auto: resume when one exists, else start a new run; "
-                      "false: start a new run (and remove old checkpoints). A resumed run continues exactly: bit "
-                      "for bit on one MPI rank, to rounding on several (as two uninterrupted parallel runs "
-                      "differ), also on a different number of ranks than the checkpoint's.");
+                      "false: start a new run (and remove old checkpoints). A resumed run continues exactly as "
+                      "the run that wrote the checkpoint would have: bit for bit on one MPI rank, to rounding on "
+                      "several (as two uninterrupted parallel runs differ), also on a different number of ranks "
+                      "than the checkpoint's. The factorization kept across steps (flow/reuse factorization) is "
+                      "dropped at every checkpoint, so a run that writes no checkpoints differs from one that "
+                      "does at the linear solver tolerance.");
     prm.declare_entry("steps per run",
                       "0",
                       Patterns::Integer(0),

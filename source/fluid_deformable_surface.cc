@@ -981,6 +981,9 @@ namespace FluidSurface
     data.set("model/element", fe->get_name());
     data.set("model/target volume", target_volume);
     data.set("model/target area", target_area);
+    data.set("model/factorizations", factorization_count);
+    for (unsigned int k = 0; k < rigid_targets.size(); ++k)
+      data.set("model/rigid target " + std::to_string(k), rigid_targets[k]);
     data.set("model/last tau", last_tau);
     data.set("model/last step tau", last_step_tau);
     // The seeded random fields are drawn in setup() only; the seed is kept for the record.
@@ -1005,6 +1008,9 @@ namespace FluidSurface
     old_position  = previous;
     target_volume = data.get_double("model/target volume");
     target_area   = data.get_double("model/target area");
+    factorization_count = data.get_unsigned("model/factorizations");
+    for (unsigned int k = 0; k < rigid_targets.size(); ++k)
+      rigid_targets[k] = data.get_double("model/rigid target " + std::to_string(k));
     last_tau      = data.get_double("model/last tau");
     last_step_tau = data.get_double("model/last step tau");
     geometry.compute_curvature();

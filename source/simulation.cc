@@ -363,6 +363,9 @@ namespace FluidSurface
             written = write_checkpoint();
             if (written)
               last_checkpoint_step = time.step_number();
+            // A resumed run starts without the factorization kept across steps; dropping it here too
+            // makes the step after a checkpoint factorize in both, so that they agree bit for bit.
+            model.release_factorization();
           }
         if (stop)
           {
