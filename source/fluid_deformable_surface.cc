@@ -14,6 +14,7 @@
 #include <fluid_surface/checkpoint.h>
 #include <fluid_surface/fluid_deformable_surface.h>
 #include <fluid_surface/output_writer.h>
+#include <fluid_surface/factorization_preconditioner.h>
 #include <fluid_surface/parameter_file.h>
 #include <fluid_surface/surface_operators.h>
 
@@ -486,22 +487,6 @@ namespace FluidSurface
       std::string  name;
     };
 
-    /// An LU factorization of a nearby matrix as a preconditioner.
-    class FactorizationPreconditioner
-    {
-    public:
-      explicit FactorizationPreconditioner(TrilinosWrappers::SolverDirect &lu)
-        : lu(lu)
-      {}
-      void
-      vmult(VectorType &dst, const VectorType &src) const
-      {
-        lu.solve(dst, src);
-      }
-
-    private:
-      TrilinosWrappers::SolverDirect &lu;
-    };
   } // namespace
 
   void

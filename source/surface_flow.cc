@@ -12,6 +12,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <fluid_surface/factorization_preconditioner.h>
 #include <fluid_surface/parameter_file.h>
 #include <fluid_surface/surface_flow.h>
 #include <fluid_surface/surface_operators.h>
@@ -654,23 +655,6 @@ namespace FluidSurface
 
   namespace
   {
-    /// An LU factorization used as a preconditioner (exact for the matrix it was built from).
-    class FactorizationPreconditioner
-    {
-    public:
-      explicit FactorizationPreconditioner(TrilinosWrappers::SolverDirect &lu)
-        : lu(lu)
-      {}
-      void
-      vmult(VectorType &dst, const VectorType &src) const
-      {
-        lu.solve(dst, src);
-      }
-
-    private:
-      TrilinosWrappers::SolverDirect &lu;
-    };
-
     /**
      * Block upper-triangular preconditioner of [A Bᵀ; B 0]:
      * y_p = −S̃⁻¹ r_p, y_u = Ã⁻¹(r_u − Bᵀ y_p), with Ã⁻¹ one AMG V-cycle on A
