@@ -17,9 +17,11 @@
 #include <utility>
 #include <vector>
 
+#include "parameter_overrides.h"
+
 namespace CheckpointTest
 {
-  using Overrides = std::vector<std::pair<std::string, std::string>>;
+  using FluidSurface::Overrides;
 
   struct Outcome
   {
@@ -52,13 +54,7 @@ namespace CheckpointTest
                      {"output/report wall time", "false"},
                      {"checkpoint/wall time between checkpoints", "0"}};
     all.insert(all.end(), overrides.begin(), overrides.end());
-    for (const auto &[path, value] : all)
-      {
-        const auto slash = path.rfind('/');
-        prm.enter_subsection(path.substr(0, slash));
-        prm.set(path.substr(slash + 1), value);
-        prm.leave_subsection();
-      }
+    FluidSurface::set_overrides(prm, all);
     Outcome            outcome;
     std::ostringstream screen;
     std::streambuf    *old = std::cout.rdbuf(screen.rdbuf());

@@ -17,9 +17,11 @@
 #include <utility>
 #include <vector>
 
+#include "parameter_overrides.h"
+
 namespace FlowTest
 {
-  using Overrides = std::vector<std::pair<std::string, std::string>>;
+  using FluidSurface::Overrides;
 
   inline FluidSurface::FixedSurfaceScene::Results
   run(const Overrides &overrides)
@@ -31,13 +33,7 @@ namespace FlowTest
                      {"output/output directory", "flow_test_results"},
                      {"output/overwrite", "true"}};
     all.insert(all.end(), overrides.begin(), overrides.end());
-    for (const auto &[path, value] : all)
-      {
-        const auto slash = path.rfind('/');
-        prm.enter_subsection(path.substr(0, slash));
-        prm.set(path.substr(slash + 1), value);
-        prm.leave_subsection();
-      }
+    FluidSurface::set_overrides(prm, all);
     const MPI_Comm    comm = MPI_COMM_WORLD;
     SurfaceGeometry   geometry(comm);
     OutputWriter      output;
