@@ -85,6 +85,19 @@ namespace FluidSurface
                       "T_r of the tangential damping (T_r/τ)(P̃(Y − X^m), η)_h added to the BGN equation: "
                       "the mesh relaxes towards the BGN distribution on the time scale T_r h² instead of "
                       "jumping there within one step, so that steps τ → 0 change nothing. 0: plain BGN.");
+    prm.declare_entry("follow rigid motion",
+                      "true",
+                      Patterns::Bool(),
+                      "The tangential damping relaxes the nodes towards X^m + τR instead of X^m, R = U + Ω × (x − x_c) "
+                      "the rigid motion of the shape (its normal part R·ν fits u^m·ν in L²): a rotating or "
+                      "translating body carries its mesh along instead of moving through it, while a body spinning "
+                      "about its own axis of symmetry (R·ν ≡ 0) leaves its mesh in place. No effect when T_r = 0.");
+    prm.declare_entry("rigid motion cutoff",
+                      "0.01",
+                      Patterns::Double(0),
+                      "ε of the fit of R: min ∫(u·ν − R·ν)² + ε|S||c|², c the coefficients of R in the basis e_d, "
+                      "e_d × (x − x_c)/R_g (R_g the radius of gyration); rigid motions with ∫(R·ν)² ≪ ε|S||c|² are "
+                      "not followed.");
     prm.declare_entry("mesh quality floor",
                       "0.02",
                       Patterns::Double(0, 1),
@@ -98,6 +111,8 @@ namespace FluidSurface
     prm.enter_subsection("mesh redistribution");
     lumped             = prm.get_bool("lumped");
     relaxation_time    = prm.get_double("relaxation time");
+    follow_rigid_motion = prm.get_bool("follow rigid motion");
+    shape_motion_cutoff = prm.get_double("rigid motion cutoff");
     mesh_quality_floor = prm.get_double("mesh quality floor");
     prm.leave_subsection();
   }
@@ -303,7 +318,7 @@ namespace FluidSurface
     setup_dofs();
     set_initial_velocity();
     if (flow.conserve_momenta)
-      rigid_targets = rigid_momenta(current);
+      rigid_targets = rigid_motion(current).momenta;
     const SurfaceGeometry::Measures m = geometry.measure();
     target_volume                     = m.volume;
     target_area                       = m.area;
@@ -335,6 +350,8 @@ namespace FluidSurface
     volume_column.reinit(owned, geometry.get_communicator());
     for (auto &column : rigid_columns)
       column.reinit(owned, geometry.get_communicator());
+    for (auto &row : rigid_rows)
+      row.reinit(owned, geometry.get_communicator());
     factorization.reset();
     refactorize_next = true;
     current.reinit(owned, relevant, geometry.get_communicator());
@@ -458,7 +475,7 @@ namespace FluidSurface
     {
       FullMatrix<double>                   matrix;
       Vector<double>                       rhs, volume_column;
-      std::array<Vector<double>, 6>        rigid;
+      std::array<Vector<double>, 6>        rigid, rigid_rows;
       std::vector<types::global_dof_index> indices;
     };
 
@@ -497,6 +514,8 @@ namespace FluidSurface
     volume_column = 0;
     for (auto &column : rigid_columns)
       column = 0;
+    for (auto &row : rigid_rows)
+      row = 0;
     const bool   stokes         = !flow.inertia;
     const bool   rigid          = rigid_constraints();
     const double regularization = stokes ? stokes_regularization : 0.0;
@@ -509,6 +528,11 @@ namespace FluidSurface
     const double viscosity = 2.0 / flow.reynolds_number;
     const double inv_be    = bending.enabled ? 1.0 / bending.bending_number : 0.0;
     const double damping   = redistribution.relaxation_time / tau;
+    // With inertia the momenta are held on the new surface S^{m+1} (linearized), so that no lag of one
+    // step's mesh motion has to be made up in the next step whatever its τ.
+    const bool momenta_on_new_surface = rigid && flow.inertia;
+    // The damping target X^m + τR: the mesh moves along with the rigid part R of u^m.
+    const RigidMotion carried = redistribution.follow_rigid_motion && damping > 0 ? rigid_motion(current) : RigidMotion();
 
     const FEValuesExtractors::Vector velocity(velocity_component), position(position_component), vec(0);
     const FEValuesExtractors::Scalar pressure(pressure_component), curvature(curvature_component),
@@ -525,8 +549,11 @@ namespace FluidSurface
       copy.rhs.reinit(n);
       copy.volume_column.reinit(n);
       if (rigid)
-        for (auto &column : copy.rigid)
-          column.reinit(n);
+        for (unsigned int k = 0; k < 6; ++k)
+          {
+            copy.rigid[k].reinit(n);
+            copy.rigid_rows[k].reinit(n);
+          }
       copy.indices.resize(n);
       cell->get_dof_indices(copy.indices);
       typename DoFHandler<2, 3>::active_cell_iterator geo_cell(&geometry.triangulation(),
@@ -594,6 +621,8 @@ namespace FluidSurface
                         copy.rigid[d](i) += phi_u[i][d] * dA;
                         copy.rigid[3 + d](i) +=
                           (cross_product_3d(Tensor<1, 3>(Point<3>::unit_vector(d)), x_m) * phi_u[i]) * dA;
+                        copy.rigid_rows[d](i) = copy.rigid[d](i);
+                        copy.rigid_rows[3 + d](i) = copy.rigid[3 + d](i);
                       }
                   for (unsigned int j = 0; j < n; ++j)
                     {
@@ -642,6 +671,20 @@ namespace FluidSurface
                 }
               else if (ci >= position_component)
                 {
+                  if (momenta_on_new_surface)
+                    {
+                      // The momenta on S^{m+1} to first order in δ = Y − X^m (u ≈ u^m in the correction):
+                      // ∫_{S^{m+1}} u ≈ ∫u + ∫u^m div_S δ, ∫_{S^{m+1}} x × u ≈ ∫x × u + ∫δ × u^m + (x × u^m) div_S δ.
+                      // The Y-dependent parts are the Y entries of the constraint rows.
+                      const double       div_Y = trace(grad_Y[i]);
+                      const Tensor<1, 3> L_old = cross_product_3d(x_m, u_old[q]);
+                      const Tensor<1, 3> Y_u   = cross_product_3d(phi_Y[i], u_old[q]);
+                      for (unsigned int d = 0; d < 3; ++d)
+                        {
+                          copy.rigid_rows[d](i) += u_old[q][d] * div_Y * dA;
+                          copy.rigid_rows[3 + d](i) += (Y_u[d] + L_old[d] * div_Y) * dA;
+                        }
+                    }
                   // (∇_S Y, ∇_S η) of κñ = Δ_S Y.
                   for (unsigned int j = 0; j < n; ++j)
                     if (fe->system_to_component_index(j).first >= position_component)
@@ -680,10 +723,10 @@ namespace FluidSurface
                 }
               else if (ci >= position_component)
                 {
-                  // (κñ, η)_h, and the tangential damping (T_r/τ)(P̃(Y − X^m), η)_h, P̃ = I − ññ.
+                  // (κñ, η)_h, and the tangential damping (T_r/τ)(P̃(Y − X^m − τR), η)_h, P̃ = I − ññ.
                   const Tensor<1, 3> eta         = scratch.flow_nodal[position].value(i, q);
                   const Tensor<1, 3> eta_tangent = eta - (eta * nt) * nt;
-                  copy.rhs(i) += damping * (x * eta_tangent) * dA;
+                  copy.rhs(i) += damping * ((x + tau * carried.value(x)) * eta_tangent) * dA;
                   for (unsigned int j = 0; j < n; ++j)
                     {
                       const unsigned int cj = fe->system_to_component_index(j).first;
@@ -702,7 +745,10 @@ namespace FluidSurface
       constraints.distribute_local_to_global(copy.volume_column, copy.indices, volume_column);
       if (rigid)
         for (unsigned int k = 0; k < 6; ++k)
-          constraints.distribute_local_to_global(copy.rigid[k], copy.indices, rigid_columns[k]);
+          {
+            constraints.distribute_local_to_global(copy.rigid[k], copy.indices, rigid_columns[k]);
+            constraints.distribute_local_to_global(copy.rigid_rows[k], copy.indices, rigid_rows[k]);
+          }
     };
 
     using Iterator = typename DoFHandler<2, 3>::active_cell_iterator;
@@ -716,8 +762,11 @@ namespace FluidSurface
     system_rhs.compress(VectorOperation::add);
     volume_column.compress(VectorOperation::add);
     if (rigid)
-      for (auto &column : rigid_columns)
-        column.compress(VectorOperation::add);
+      for (unsigned int k = 0; k < 6; ++k)
+        {
+          rigid_columns[k].compress(VectorOperation::add);
+          rigid_rows[k].compress(VectorOperation::add);
+        }
   }
 
   void
@@ -750,15 +799,37 @@ namespace FluidSurface
     return control.last_step();
   }
 
-  std::array<double, 6>
-  FluidDeformableSurface::rigid_momenta(const VectorType &state) const
+  Tensor<1, 3>
+  FluidDeformableSurface::RigidMotion::value(const Point<3> &x) const
+  {
+    return translation + cross_product_3d(rotation, x - centre);
+  }
+
+  FluidDeformableSurface::RigidMotion
+  FluidDeformableSurface::rigid_motion(const VectorType &state) const
   {
     const QGauss<2>                  q(fe->degree + 1);
     FEValues<2, 3>                   fe_values(geometry.mapping(), *fe, q,
-                                               update_values | update_quadrature_points | update_JxW_values);
+                                               update_values | update_quadrature_points | update_normal_vectors |
+                                                 update_JxW_values);
     const FEValuesExtractors::Vector velocity(velocity_component);
     std::vector<Tensor<1, 3>>        u(q.size());
-    std::array<double, 6>            momenta = {{0, 0, 0, 0, 0, 0}};
+    const SurfaceGeometry::Measures  m = geometry.measure();
+    RigidMotion                      motion;
+    motion.centre = Point<3>(m.centre_of_mass);
+    // The radius of gyration makes the rotations r_{3+d} = e_d × (x − x_c)/R_g commensurate with the translations.
+    double gyration = 0;
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          for (unsigned int k = 0; k < q.size(); ++k)
+            gyration += (fe_values.quadrature_point(k) - motion.centre).norm_square() * fe_values.JxW(k);
+        }
+    gyration = std::sqrt(Utilities::MPI::sum(gyration, geometry.get_communicator()) / m.area);
+
+    // [0..5] (r_k, u) about the origin; [6..11] ∫(u·ν)(r_k·ν); [12..47] ∫(r_j·ν)(r_k·ν), r about x_c.
+    std::array<double, 48> sums{};
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -766,17 +837,51 @@ namespace FluidSurface
           fe_values[velocity].get_function_values(state, u);
           for (unsigned int k = 0; k < q.size(); ++k)
             {
-              const Tensor<1, 3> L = cross_product_3d(fe_values.quadrature_point(k), u[k]);
+              const double        dA = fe_values.JxW(k);
+              const Point<3>     &x  = fe_values.quadrature_point(k);
+              const Tensor<1, 3> &nu = fe_values.normal_vector(k);
+              const Tensor<1, 3>  L  = cross_product_3d(x, u[k]);
+              // r_k·ν: ν_d for the translations, (e_d × r)·ν = (r × ν)_d for the rotations.
+              const Tensor<1, 3> moment = cross_product_3d(x - motion.centre, nu) / gyration;
+              double             rn[6];
               for (unsigned int d = 0; d < 3; ++d)
                 {
-                  momenta[d] += u[k][d] * fe_values.JxW(k);
-                  momenta[3 + d] += L[d] * fe_values.JxW(k);
+                  rn[d]     = nu[d];
+                  rn[3 + d] = moment[d];
+                  sums[d] += u[k][d] * dA;
+                  sums[3 + d] += L[d] * dA;
+                }
+              for (unsigned int j = 0; j < 6; ++j)
+                {
+                  sums[6 + j] += (u[k] * nu) * rn[j] * dA;
+                  for (unsigned int l = 0; l < 6; ++l)
+                    sums[12 + 6 * j + l] += rn[j] * rn[l] * dA;
                 }
             }
         }
-    Utilities::MPI::sum(ArrayView<const double>(momenta.data(), 6), geometry.get_communicator(),
-                        ArrayView<double>(momenta.data(), 6));
-    return momenta;
+    Utilities::MPI::sum(ArrayView<const double>(sums.data(), sums.size()), geometry.get_communicator(),
+                        ArrayView<double>(sums.data(), sums.size()));
+    std::copy(sums.begin(), sums.begin() + 6, motion.momenta.begin());
+
+    // The rigid motion of the shape: R minimizing ∫(u·ν − R·ν)² + ε|S| |c|², c the coefficients of R in the
+    // scaled basis. ε cuts off the motions that hardly move the shape: the rotation of a body about its own
+    // axis of symmetry (R·ν ≡ 0) moves no surface, and its mesh need not move.
+    FullMatrix<double> normal_matrix(6, 6), inverse(6, 6);
+    Vector<double>     rhs(6), coefficients(6);
+    for (unsigned int j = 0; j < 6; ++j)
+      {
+        rhs(j) = sums[6 + j];
+        for (unsigned int l = 0; l < 6; ++l)
+          normal_matrix(j, l) = sums[12 + 6 * j + l] + (j == l ? redistribution.shape_motion_cutoff * m.area : 0.0);
+      }
+    inverse.invert(normal_matrix);
+    inverse.vmult(coefficients, rhs);
+    for (unsigned int d = 0; d < 3; ++d)
+      {
+        motion.translation[d] = coefficients(d);
+        motion.rotation[d]    = coefficients(3 + d) / gyration;
+      }
+    return motion;
   }
 
   FluidDeformableSurface::StepResult
@@ -791,19 +896,27 @@ namespace FluidSurface
     // Bordering: the global constraints c_k·x = g_k with multipliers μ_k (force μ_k c_k in the
     // momentum rows): the volume row (u·ñ, 1) = −(V^m − V₀)/τ_c (μ = γ) and, in the Stokes limit,
     // ∫u = 0, ∫x × u = 0. With x_b = A⁻¹b and x_k = A⁻¹c_k: Σ_k (c_j·x_k) μ_k = c_j·x_b − g_j.
-    std::vector<const VectorType *> columns;
+    std::vector<const VectorType *> columns, rows;
     std::vector<double>             rates;
     if (volume_constraint.enabled)
       {
         columns.push_back(&volume_column);
+        rows.push_back(&volume_column);
         rates.push_back(-(geometry.measure().volume - target_volume) / drift_time(tau));
       }
     if (rigid_constraints())
-      for (unsigned int k = 0; k < rigid_columns.size(); ++k)
-        {
-          columns.push_back(&rigid_columns[k]);
-          rates.push_back(rigid_targets[k]);
-        }
+      {
+        // The constant parts of the linearized momenta on S^{m+1} (see assemble()) move to the right:
+        // with δ = Y − X^m and div_S X^m = 2 they are −2∫u^m and −3∫x × u^m.
+        const std::array<double, 6> old_momenta =
+          flow.inertia ? rigid_motion(current).momenta : std::array<double, 6>{{0, 0, 0, 0, 0, 0}};
+        for (unsigned int k = 0; k < rigid_columns.size(); ++k)
+          {
+            columns.push_back(&rigid_columns[k]);
+            rows.push_back(&rigid_rows[k]);
+            rates.push_back(rigid_targets[k] + (k < 3 ? 2.0 : 3.0) * old_momenta[k]);
+          }
+      }
 
     const MPI_Comm          comm = geometry.get_communicator();
     VectorType              x1(owned, comm);
@@ -841,9 +954,9 @@ namespace FluidSurface
             Vector<double>     residual(nc), mu(nc);
             for (unsigned int j = 0; j < nc; ++j)
               {
-                residual(j) = (*columns[j]) * x1 - rates[j];
+                residual(j) = (*rows[j]) * x1 - rates[j];
                 for (unsigned int k = 0; k < nc; ++k)
-                  schur(j, k) = (*columns[j]) * xk[k];
+                  schur(j, k) = (*rows[j]) * xk[k];
               }
             schur.gauss_jordan();
             schur.vmult(mu, residual);

@@ -75,6 +75,8 @@ namespace FluidSurface
 
     bool   lumped            = true;
     double relaxation_time   = 0.05; ///< T_r of the tangential damping (0: plain BGN)
+    bool   follow_rigid_motion = true; ///< the damping relaxes towards X^m + τR (R: rigid motion of the shape)
+    double shape_motion_cutoff = 0.01; ///< ε of the regularized fit of R
     double mesh_quality_floor = 0.05; ///< a run stops when the mesh quality falls below this
   };
 
@@ -259,9 +261,21 @@ namespace FluidSurface
     load(const CheckpointData &data);
 
   private:
-    /// ∫u and ∫x × u (about the origin) of @p state on the current surface: the values (r_k, u).
-    std::array<double, 6>
-    rigid_momenta(const VectorType &state) const;
+    /// The momenta of a velocity field, and the rigid motion of the surface it moves.
+    struct RigidMotion
+    {
+      std::array<double, 6> momenta = {{0, 0, 0, 0, 0, 0}}; ///< ∫u and ∫x × u about the origin: (r_k, u)
+      dealii::Point<3>      centre;                        ///< x_c = ∫x / |S|
+      dealii::Tensor<1, 3>  translation;                   ///< U
+      dealii::Tensor<1, 3>  rotation;                      ///< Ω
+      /// R(x) = U + Ω × (x − x_c), whose normal part is closest to u·ν (see rigid_motion()).
+      dealii::Tensor<1, 3>
+      value(const dealii::Point<3> &x) const;
+    };
+    /// The momenta of @p state on the current surface, and the rigid motion R whose normal velocity R·ν
+    /// fits u·ν in L² (regularized by `shape_motion_cutoff`): the motion of the shape, not of the fluid.
+    RigidMotion
+    rigid_motion(const VectorType &state) const;
     void
     setup_dofs();
     void
@@ -338,6 +352,9 @@ namespace FluidSurface
     /// r = e_1, e_2, e_3, e_1 × x, e_2 × x, e_3 × x, whose multipliers enforce ∫u = 0, ∫x × u = 0.
     double                                          stokes_regularization = 1e-6;
     std::array<VectorType, 6>                       rigid_columns;
+    /// The constraint rows of the rigid motions: (r_k, u) in the Stokes limit; with inertia the momenta on
+    /// the new surface, linearized in Y (their Y entries; see assemble()).
+    std::array<VectorType, 6>                       rigid_rows;
     /// Values g_k of the rigid-motion constraints (r_k, u) = g_k: 0 in the Stokes limit, the initial
     /// ∫u and ∫x × u with `conserve momenta`.
     std::array<double, 6> rigid_targets = {{0, 0, 0, 0, 0, 0}};
