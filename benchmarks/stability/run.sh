@@ -3,8 +3,9 @@
 #   benchmarks/stability/run.sh [--quick] [PART ...]     PART = fixed | perturbed | elongated (default: all)
 # fixed:     the rotating prolate (prm/prolate.prm) with a fixed τ (adaptive = false: a step whose energy rise
 #            exceeds the tolerance stops the run) to t = 1, refinements 2 and 3, τ = 0.1 … 0.0125.
-# perturbed: the rotating oblate (prm/oblate.prm), refinement 2, adaptive τ, towards t = 50 with seeded shape
-#            or velocity noise of several amplitudes; each run is cut after LIMIT s of wall time (default 600).
+# perturbed: the rotating oblate (prm/oblate.prm), refinement PERTURBED_REFINEMENT (3), adaptive τ, towards t = 50
+#            with seeded shape or velocity noise (PERTURBED_CASES, default "shape:0.01 shape:0.05 velocity:0.1
+#            velocity:0.5"); each run is cut after LIMIT s of wall time (default 600).
 # elongated: a 1:5 spheroid [0.4, 0.4, 2] (refinement 2 and 3) released from rest and spun at ω0 = 2, adaptive τ, to t = 5.
 # Each case writes a row to benchmarks/stability/cases/<name>.csv and keeps its statistics; results.csv and
 # stability.png are rebuilt from all cases. --quick: one short case per part.
@@ -74,12 +75,12 @@ subsection time stepping
 end"
     done; done ;;
   perturbed)
-    cases="shape:0.01 shape:0.05 velocity:0.1 velocity:0.5"; end=50
+    cases=${PERTURBED_CASES:-"shape:0.01 shape:0.05 velocity:0.1 velocity:0.5"}; end=50; pr=${PERTURBED_REFINEMENT:-3}
     [ $quick = 1 ] && { cases="shape:0.01"; end=0.2; }
     for c in $cases; do
       kind=${c%%:*}; a=${c##*:}
-      run perturbed_${kind}_$a prm/oblate.prm "subsection geometry
-  set refinement = 2
+      run perturbed_r${pr}_${kind}_$a prm/oblate.prm "subsection geometry
+  set refinement = $pr
 end
 subsection initial state
   set $kind perturbation = $a
