@@ -59,7 +59,10 @@ namespace FluidSurface
                       "0.01",
                       Patterns::Double(0),
                       "τ_drift: volume and area drifts are returned at the rate (V − V₀)/τ_c with "
-                      "τ_c = max(τ, τ_drift) (and likewise for the area through div_P u).");
+                      "τ_c = max(τ_drift, τ_max) (τ_max = time stepping/maximum time step; likewise for the area "
+                      "through div_P u, and with `conserve momenta` the momenta by the fraction τ/τ_c per step). "
+                      "τ_c does not depend on the step τ, so a step retried with a smaller τ asks for a "
+                      "proportionally smaller correction.");
     prm.leave_subsection();
   }
 
@@ -186,6 +189,9 @@ namespace FluidSurface
     redistribution.parse_parameters(prm);
     prm.enter_subsection("volume constraint");
     drift_correction_time = prm.get_double("drift correction time");
+    prm.leave_subsection();
+    prm.enter_subsection("time stepping");
+    drift_correction_time = std::max(drift_correction_time, prm.get_double("maximum time step"));
     prm.leave_subsection();
     prm.enter_subsection("flow");
     flow.reynolds_number = prm.get_double("Re");
@@ -908,13 +914,17 @@ namespace FluidSurface
       {
         // The constant parts of the linearized momenta on S^{m+1} (see assemble()) move to the right:
         // with δ = Y − X^m and div_S X^m = 2 they are −2∫u^m and −3∫x × u^m.
+        // A drift P^m − P₀ (from the linearization) is returned by the fraction τ/τ_c per step, like the area
+        // and volume drifts, so that a retry with a smaller τ asks for a smaller change of u.
         const std::array<double, 6> old_momenta =
           flow.inertia ? rigid_motion(current).momenta : std::array<double, 6>{{0, 0, 0, 0, 0, 0}};
+        const double fraction = flow.inertia ? std::min(1.0, tau / drift_time(tau)) : 1.0;
         for (unsigned int k = 0; k < rigid_columns.size(); ++k)
           {
+            const double target = old_momenta[k] + fraction * (rigid_targets[k] - old_momenta[k]);
             columns.push_back(&rigid_columns[k]);
             rows.push_back(&rigid_rows[k]);
-            rates.push_back(rigid_targets[k] + (k < 3 ? 2.0 : 3.0) * old_momenta[k]);
+            rates.push_back(target + (k < 3 ? 2.0 : 3.0) * old_momenta[k]);
           }
       }
 

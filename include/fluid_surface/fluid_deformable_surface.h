@@ -366,7 +366,7 @@ namespace FluidSurface
     }
     /// A⁻¹b and A⁻¹c_k of the last step: the initial guesses of the GMRES solves.
     std::vector<VectorType>                         last_solves;
-    /// The relaxation time τ_c = max(τ, τ_drift) of the area and volume drift corrections.
+    /// The relaxation time τ_c = max(τ_drift, τ_max) of the drift corrections (≥ τ, independent of τ).
     double
     drift_time(const double tau) const
     {
