@@ -20,6 +20,7 @@
 #include <fluid_surface/statistics_file.h>
 #include <fluid_surface/surface_geometry.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -79,6 +80,12 @@ namespace FluidSurface
       direct,              ///< Amesos (KLU or MUMPS); with convection the old factorization preconditions GMRES
       block_preconditioned ///< GMRES + block-triangular preconditioner: AMG(A_uu), Schur ≈ Cahouet–Chabard
     };
+    /// The matrix on which the velocity AMG of the block preconditioner is built.
+    enum class VelocityAMGOperator
+    {
+      q2,               ///< the Q2 velocity block A itself
+      low_order_refined ///< A assembled with Q1 on the 4 sub-cells of each cell (same DoFs as Q2)
+    };
 
     /// Work done by one linear solve.
     struct SolveInfo
@@ -113,6 +120,8 @@ namespace FluidSurface
       std::string   direct_solver_name   = "Amesos_Klu";
       std::string   amg_smoother         = "symmetric block Gauss-Seidel"; ///< ML smoother of the velocity AMG
       double        amg_aggregation_threshold = 1e-4; ///< ML aggregation threshold of the velocity AMG
+      VelocityAMGOperator amg_operator = VelocityAMGOperator::q2; ///< matrix of the velocity AMG
+      bool          amg_node_frames      = true; ///< velocity AMG in node frames [t₁ t₂ n]
       bool          reuse_factorization  = true;
       unsigned int  max_reuse_iterations = 10;
       double        tolerance            = 1e-10; ///< relative residual of Krylov solves
@@ -230,6 +239,13 @@ namespace FluidSurface
                    CopyData                                                      &copy) const;
     void
     copy_local_to_global(const CopyData &copy);
+    /// Quadrature of the low-order-refined operator: 2×2 Gauss points on each of the 4 sub-cells.
+    static dealii::Quadrature<2>
+    lor_quadrature();
+    /// The orthonormal frame [t₁ t₂ n] at a velocity node x (n exact if known, else ñ/|ñ|); the
+    /// identity at a @p cartesian (constrained) node and on meshes with hanging nodes.
+    dealii::Tensor<2, 3>
+    lor_frame(const dealii::Point<3> &x, const dealii::Tensor<1, 3> &smooth_normal, const bool cartesian) const;
     void
     remove_killing_components_from_rhs();
     /// The constraints fixing the Killing fields at one node per axis (direct solver).
@@ -254,6 +270,14 @@ namespace FluidSurface
     std::vector<dealii::Tensor<1, 3>>                                            killing;
 
     dealii::FESystem<2, 3>            fe;
+    /// [Q1 iso Q2]³ × Q1: piecewise bilinear on the 4 sub-cells, with the DoF layout of fe.
+    dealii::FESystem<2, 3>            lor_fe;
+    /// Per sub-cell of the low-order-refined operator: its 12 local velocity DoFs, its quadrature points.
+    std::vector<std::vector<unsigned int>> lor_subcell_dofs, lor_subcell_points;
+    std::vector<unsigned int>              lor_dof_node; ///< local velocity DoF → its node (0–8) in the cell
+    bool hanging_nodes = false; ///< the mesh has hanging nodes (node frames are then Cartesian)
+    /// Velocity nodes (their x, y, z DoFs) and frames [t₁ t₂ n] of the low-order-refined AMG.
+    std::vector<std::pair<std::array<dealii::types::global_dof_index, 3>, dealii::Tensor<2, 3>>> lor_nodes;
     dealii::DoFHandler<2, 3>          flow_dofs;
     dealii::types::global_dof_index   n_u = 0, n_p = 0;
     dealii::IndexSet                  owned, relevant;
@@ -263,6 +287,7 @@ namespace FluidSurface
     dealii::TrilinosWrappers::SparseMatrix      system_matrix;
     dealii::TrilinosWrappers::BlockSparseMatrix preconditioner_matrix; ///< A_uu without convection; M_p
     dealii::TrilinosWrappers::BlockSparseMatrix pressure_laplace;      ///< L_p (time-dependent runs)
+    dealii::TrilinosWrappers::SparseMatrix      lor_velocity_matrix;   ///< A_uu with Q1 on the sub-cells
     VectorType                                  system_rhs;
     VectorType                                  unconstrained_rhs; ///< F before constraints (stationary)
     std::vector<VectorType>                     killing_moments;   ///< m_a = (a × x, φ_i)
