@@ -91,8 +91,9 @@ namespace FluidSurface
                       "1e-4",
                       Patterns::Double(0, 1),
                       "ML aggregation threshold θ of the velocity AMG (connections weaker than θ are dropped "
-                      "when aggregating). Stationary sphere problem, GMRES iterations at refinements 3–5: "
-                      "35, 58, 139 with θ = 0.02; 30, 44, 46 with θ = 1e-4 (benchmarks/surface_stokes).");
+                      "when aggregating). Stationary sphere problem, Cartesian components, GMRES iterations at "
+                      "refinements 3–5: 35, 58, 139 with θ = 0.02; 30, 44, 46 with θ = 1e-4 "
+                      "(benchmarks/surface_stokes).");
     prm.declare_entry("velocity AMG operator",
                       "Q2",
                       Patterns::Selection("Q2|low-order refined"),
@@ -100,15 +101,17 @@ namespace FluidSurface
                       "block A itself; low-order refined, the same operator (2/Re)(σ(u), σ(v)) + η(u·n, v·n) "
                       "[+ (α₀/τ)(u, v)] assembled with piecewise bilinear functions on the 4 sub-cells of "
                       "each cell (the Q2 nodes are the vertices of the sub-cells, so the DoFs are the same); "
-                      "its V-cycle then preconditions the Q2 block.");
+                      "its V-cycle then preconditions the Q2 block. Stationary sphere, node frames, GMRES "
+                      "iterations at refinements 3–6: Q2 29, 26, 31, 33; low-order refined 43, 36, 38 at "
+                      "refinements 3–5 (benchmarks/surface_stokes).");
     prm.declare_entry("velocity AMG node frames",
                       "true",
                       Patterns::Bool(),
                       "Build the velocity AMG on the matrix written in node frames [t₁ t₂ n] (tangential and "
                       "normal components at each node, Cartesian at constrained nodes) instead of Cartesian "
                       "components; the penalty η(u·n, v·n) then acts on the normal DoFs only. Stationary "
-                      "sphere, GMRES iterations at refinements 3–5 (Q2 operator): 30, 44, 46 Cartesian; "
-                      "29, 26, 31 in node frames (benchmarks/surface_stokes).");
+                      "sphere, GMRES iterations at refinements 3–6 (Q2 operator): 30, 44, 46, 54 Cartesian; "
+                      "29, 26, 31, 33 in node frames (benchmarks/surface_stokes).");
     prm.declare_entry("direct solver",
                       "Amesos_Klu",
                       Patterns::Selection("Amesos_Klu|Amesos_Mumps"),
@@ -238,8 +241,9 @@ namespace FluidSurface
         << " normal, "
         << (parameters.solver == LinearSolver::direct ?
               parameters.direct_solver_name :
-              std::string(parameters.amg_operator == VelocityAMGOperator::q2 ? "GMRES + block AMG" :
-                                                                               "GMRES + block AMG (low-order refined)"));
+              std::string("GMRES + block AMG (") +
+                (parameters.amg_operator == VelocityAMGOperator::q2 ? "Q2" : "low-order refined") +
+                (parameters.amg_node_frames ? ", node frames)" : ", Cartesian)"));
     return out.str();
   }
 

@@ -31,7 +31,8 @@ def run(settings, repeat=repeats, threads=None):
 columns = ["case", "problem", "shape", "k", "refinement", "dofs", "solver", "scheme", "convection", "Re",
            "penalty factor", "tau", "velocity L2", "tangential L2", "gradient L2", "pressure L2", "normal L2",
            "energy change", "measured rate", "exact rate", "steps", "total iterations", "max iterations",
-           "factorizations", "assemble time", "solve time", "wall time", "threads", "aggregation threshold"]
+           "factorizations", "assemble time", "solve time", "wall time", "threads", "aggregation threshold",
+           "velocity AMG"]
 rows = []
 
 def record(case, settings, r):
@@ -44,7 +45,10 @@ def record(case, settings, r):
            "scheme": s.get("flow/time scheme", "BDF2"), "convection": s.get("flow/convection", "true"),
            "Re": s.get("flow/Re", "1"), "penalty factor": s.get("flow/penalty factor", "10"),
            "tau": s.get("time stepping/time step", ""), "threads": s.get("threads", ""),
-           "aggregation threshold": s.get("flow/velocity AMG aggregation threshold", "")}
+           "aggregation threshold": s.get("flow/velocity AMG aggregation threshold", ""),
+           "velocity AMG": "" if s.get("flow/linear solver", "direct") == "direct" else
+                           s.get("flow/velocity AMG operator", "Q2") + ", " +
+                           ("node frames" if s.get("flow/velocity AMG node frames", "true") == "true" else "Cartesian")}
     for key, name in [("velocity", "velocity L2"), ("tangential", "tangential L2"), ("gradient", "gradient L2"),
                       ("pressure", "pressure L2"), ("normal", "normal L2")]:
         row[name] = r[key]
@@ -56,7 +60,9 @@ def record(case, settings, r):
                                        "energy change", "max iterations", "wall time")}, flush=True)
 
 max_ref = 3 if quick else 5
-solver_cases = ("stationary solver", "stationary solver theta", "threads", "time solver", "time solver no reuse")
+# "stationary solver theta" (θ = 0.02, Cartesian AMG) is not rerun by --solvers: its rows are kept from the
+# session that compared the aggregation thresholds.
+solver_cases = ("stationary solver", "stationary solver amg", "threads", "time solver", "time solver no reuse")
 if solvers_only:
     with open(os.path.join(outdir, "results.csv")) as f:
         rows = [dict(r) for r in csv.DictReader(f) if r["case"] not in solver_cases]
@@ -81,10 +87,21 @@ for k in (2, 3):
             if solver[1]:
                 s["flow/direct solver"] = solver[1]
             record("stationary solver", s, run(s))
-for ref in range(1, max_ref + 1):
+for ref in range(1, max_ref + 1) if not solvers_only else ():
     s = {"geometry/shape": "sphere", "geometry/refinement": ref, "flow/linear solver": "block preconditioned",
-         "flow/velocity AMG aggregation threshold": 0.02}
+         "flow/velocity AMG aggregation threshold": 0.02, "flow/velocity AMG node frames": "false"}
     record("stationary solver theta", s, run(s, 1 if ref == 5 else repeats))
+# 2a. Velocity AMG variants of the block preconditioner (the default, Q2 in node frames, is in section 2):
+#     Q2 in Cartesian components (the former default), and the low-order-refined operator in node frames
+#     and in Cartesian components; k = 3 only the former default.
+for k, variants in ((2, (("Q2", "false"), ("low-order refined", "true"), ("low-order refined", "false"))),
+                    (3, (("Q2", "false"),))):
+    for operator, frames in variants:
+        for ref in range(1, max_ref + 1):
+            s = {"geometry/shape": "sphere", "geometry/refinement": ref, "geometry/position degree": k,
+                 "flow/linear solver": "block preconditioned", "flow/velocity AMG operator": operator,
+                 "flow/velocity AMG node frames": frames}
+            record("stationary solver amg", s, run(s))
 # 2b. Threads in assembly (WorkStream): the same stationary problem with 1 and 2 threads.
 for threads in (1, 2):
     s = {"geometry/shape": "sphere", "geometry/refinement": max_ref - 1}
@@ -118,8 +135,12 @@ for l in (2, 3) if not solvers_only else ():
             record(f"decay l={l} tau", s, run(s, 1))
 # 6. Time-dependent solvers (decaying mode l = 2, BDF2, tau = 0.05): direct with reuse, direct without, block.
 for ref in range(2, (3 if quick else 4) + 1):
-    for extra in ({}, {"flow/reuse factorization": "false"}, {"flow/linear solver": "block preconditioned"},
-                  {"flow/convection": "false"}, {"flow/convection": "false", "flow/linear solver": "block preconditioned"}):
+    block = {"flow/linear solver": "block preconditioned"}
+    cartesian = {**block, "flow/velocity AMG node frames": "false"}
+    lor = {**block, "flow/velocity AMG operator": "low-order refined"}
+    stokes = {"flow/convection": "false"}
+    for extra in ({}, {"flow/reuse factorization": "false"}, block, cartesian, lor,
+                  stokes, {**stokes, **block}, {**stokes, **cartesian}, {**stokes, **lor}):
         s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface/problem": "decaying mode",
              "flow/Re": 10, "time stepping/time step": 0.05, "time stepping/end time": 1, **extra}
         tag = "time solver" + ("" if "flow/reuse factorization" not in extra else " no reuse")
@@ -144,9 +165,10 @@ for label, fn, style in [
         ("direct KLU, k=3", lambda r: r["case"] == "stationary solver" and "Klu" in r["solver"] and str(r["k"]) == "3", "s--"),
         ("direct MUMPS, k=2", lambda r: r["case"] == "stationary solver" and "Mumps" in r["solver"] and str(r["k"]) == "2", "^-"),
         ("direct MUMPS, k=3", lambda r: r["case"] == "stationary solver" and "Mumps" in r["solver"] and str(r["k"]) == "3", "v--"),
-        ("GMRES + block AMG, k=2", lambda r: r["case"] == "stationary solver" and r["solver"].startswith("block") and str(r["k"]) == "2", "d-"),
-        ("GMRES + block AMG, k=3", lambda r: r["case"] == "stationary solver" and r["solver"].startswith("block") and str(r["k"]) == "3", "D--"),
-        ("GMRES + block AMG, k=2, θ=0.02", lambda r: r["case"] == "stationary solver theta", "x:")]:
+        ("GMRES + block AMG (node frames), k=2", lambda r: r["case"] == "stationary solver" and r["solver"].startswith("block") and str(r["k"]) == "2", "d-"),
+        ("GMRES + block AMG (node frames), k=3", lambda r: r["case"] == "stationary solver" and r["solver"].startswith("block") and str(r["k"]) == "3", "D--"),
+        ("GMRES + block AMG (Cartesian), k=2", lambda r: r["case"] == "stationary solver amg" and r["velocity AMG"] == "Q2, Cartesian" and str(r["k"]) == "2", "x:"),
+        ("GMRES + LOR AMG (node frames), k=2", lambda r: r["case"] == "stationary solver amg" and r["velocity AMG"] == "low-order refined, node frames", "+:")]:
     x, y = series(fn)
     ax.loglog(list(x), list(y), style, label=label)
 ax.set_xlabel("wall time [s] (median of %d)" % repeats)
@@ -158,9 +180,9 @@ ax = axes[1]
 for label, fn, style in [
         ("NS, direct + reuse", lambda r: r["case"] == "time solver" and r["convection"] == "true" and r["solver"].startswith("direct"), "o-"),
         ("NS, direct, no reuse", lambda r: r["case"] == "time solver no reuse", "x--"),
-        ("NS, block AMG", lambda r: r["case"] == "time solver" and r["convection"] == "true" and r["solver"].startswith("block"), "d-"),
+        ("NS, block AMG (node frames)", lambda r: r["case"] == "time solver" and r["convection"] == "true" and r["velocity AMG"] == "Q2, node frames", "d-"),
         ("Stokes, direct", lambda r: r["case"] == "time solver" and r["convection"] == "false" and r["solver"].startswith("direct"), "s-"),
-        ("Stokes, block AMG", lambda r: r["case"] == "time solver" and r["convection"] == "false" and r["solver"].startswith("block"), "^-")]:
+        ("Stokes, block AMG (node frames)", lambda r: r["case"] == "time solver" and r["convection"] == "false" and r["velocity AMG"] == "Q2, node frames", "^-")]:
     pts = sorted((float(r["wall time"]), float(r["velocity L2"])) for r in rows if fn(r))
     if pts:
         x, y = zip(*pts)
