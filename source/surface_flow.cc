@@ -58,8 +58,14 @@ namespace FluidSurface
                       "(3u^{m+1} − 4u^m + u^{m−1})/(2τ) (first step BDF1).");
     prm.declare_entry("tangentiality",
                       "penalty",
-                      Patterns::Selection("penalty"),
-                      "How u·ν = 0 is imposed: penalty η(u·n, v·n), η = β h_K^{−q}.");
+                      Patterns::Selection("penalty|multiplier"),
+                      "How u·n = 0 is imposed: penalty η(u·n, v·n), η = β h_K^{−q}; or multiplier, a Lagrange "
+                      "multiplier λ ∈ Q_d (d = `multiplier degree`) with (λ, v·n) + (u·n, μ) added to the "
+                      "saddle-point system (direct solver only; n as in `penalty normal`).");
+    prm.declare_entry("multiplier degree",
+                      "1",
+                      Patterns::Integer(1, 2),
+                      "Degree d of the tangentiality multiplier λ ∈ Q_d (tangentiality = multiplier).");
     prm.declare_entry("penalty normal",
                       "exact",
                       Patterns::Selection("exact|continuous|cell"),
@@ -148,6 +154,8 @@ namespace FluidSurface
     const std::string normal = prm.get("penalty normal");
     penalty_normal   = normal == "exact" ? PenaltyNormal::exact :
                        normal == "continuous" ? PenaltyNormal::continuous : PenaltyNormal::cell;
+    tangentiality    = prm.get("tangentiality") == "penalty" ? Tangentiality::penalty : Tangentiality::multiplier;
+    multiplier_degree = prm.get_integer("multiplier degree");
     penalty_factor   = prm.get_double("penalty factor");
     penalty_exponent = prm.get_double("penalty exponent");
     solver = prm.get("linear solver") == "direct" ? LinearSolver::direct : LinearSolver::block_preconditioned;
@@ -165,6 +173,11 @@ namespace FluidSurface
       throw_invalid_entry("flow/Re", prm.get("Re"), "a positive Reynolds number");
     if (!(penalty_factor > 0))
       throw_invalid_entry("flow/penalty factor", prm.get("penalty factor"), "a positive β");
+    if (tangentiality == Tangentiality::multiplier && solver != LinearSolver::direct)
+      throw_invalid_entry("flow/tangentiality",
+                          "multiplier",
+                          "penalty with `linear solver = block preconditioned` (the multiplier is implemented for "
+                          "the direct solver only)");
     prm.leave_subsection();
   }
 
@@ -186,12 +199,30 @@ namespace FluidSurface
     : SurfaceFlow(geometry, Parameters())
   {}
 
+  namespace
+  {
+    /// [velocity]³ × Q1 pressure, × Q_d multiplier with Tangentiality::multiplier.
+    std::vector<const FiniteElement<2, 3> *>
+    flow_elements(const FiniteElement<2, 3> &velocity, const SurfaceFlow::Parameters &parameters)
+    {
+      static const FE_Q<2, 3> q1(1), q2(2);
+      if (parameters.tangentiality == SurfaceFlow::Tangentiality::multiplier)
+        return {&velocity, &q1, parameters.multiplier_degree == 2 ? &q2 : &q1};
+      return {&velocity, &q1};
+    }
+    std::vector<unsigned int>
+    flow_multiplicities(const SurfaceFlow::Parameters &parameters)
+    {
+      return std::vector<unsigned int>(parameters.tangentiality == SurfaceFlow::Tangentiality::multiplier ? 3 : 2, 1);
+    }
+  } // namespace
+
   SurfaceFlow::SurfaceFlow(const SurfaceGeometry &geometry, const Parameters &parameters)
     : geometry(geometry)
     , communicator(geometry.get_communicator())
     , parameters(parameters)
-    , fe(FESystem<2, 3>(FE_Q<2, 3>(2), 3), 1, FE_Q<2, 3>(1), 1)
-    , lor_fe(FESystem<2, 3>(FE_Q_iso_Q1<2, 3>(2), 3), 1, FE_Q<2, 3>(1), 1)
+    , fe(flow_elements(FESystem<2, 3>(FE_Q<2, 3>(2), 3), parameters), flow_multiplicities(parameters))
+    , lor_fe(flow_elements(FESystem<2, 3>(FE_Q_iso_Q1<2, 3>(2), 3), parameters), flow_multiplicities(parameters))
     , flow_dofs(geometry.triangulation())
   {
     // Sub-cell s = (s_x, s_y) of the reference cell holds the nodes and quadrature points with
@@ -238,7 +269,11 @@ namespace FluidSurface
         << (parameters.penalty_normal == PenaltyNormal::exact ?
               "exact" :
               parameters.penalty_normal == PenaltyNormal::continuous ? "continuous" : "cell")
-        << " normal, "
+        << " normal"
+        << (parameters.tangentiality == Tangentiality::multiplier ?
+              " (Lagrange multiplier λ ∈ Q" + std::to_string(parameters.multiplier_degree) + " instead)" :
+              std::string())
+        << ", "
         << (parameters.solver == LinearSolver::direct ?
               parameters.direct_solver_name :
               std::string("GMRES + block AMG (") +
@@ -269,6 +304,9 @@ namespace FluidSurface
   void
   SurfaceFlow::setup(const std::vector<Tensor<1, 3>> &killing_axes)
   {
+    if ((parameters.tangentiality == Tangentiality::multiplier) != (fe.n_components() == 5))
+      throw InputError("flow/tangentiality was changed after the flow solver was created; parse the parameters "
+                       "before constructing SurfaceFlow");
     if (parameters.penalty_normal == PenaltyNormal::exact && !exact_normal)
       throw InputError("flow/penalty normal = exact needs the normal of an analytic surface; this scene has "
                        "none (use continuous or cell)");
@@ -398,8 +436,8 @@ namespace FluidSurface
     class FlowFunction : public Function<3>
     {
     public:
-      FlowFunction(const FlowField &field, const double time)
-        : Function<3>(4, time)
+      FlowFunction(const FlowField &field, const double time, const unsigned int n_components)
+        : Function<3>(n_components, time)
         , field(field)
       {}
       double
@@ -407,6 +445,8 @@ namespace FluidSurface
       {
         if (component < 3)
           return field.velocity(x, this->get_time())[component];
+        if (component > 3) // the tangentiality multiplier
+          return 0.0;
         return field.pressure ? field.pressure(x, this->get_time()) : 0.0;
       }
 
@@ -419,7 +459,7 @@ namespace FluidSurface
   SurfaceFlow::set_initial_velocity(const FlowField &initial, const double time)
   {
     VectorType owned_values(owned, communicator);
-    VectorTools::interpolate(geometry.mapping(), flow_dofs, FlowFunction(initial, time), owned_values);
+    VectorTools::interpolate(geometry.mapping(), flow_dofs, FlowFunction(initial, time, fe.n_components()), owned_values);
     constraints.distribute(owned_values);
     current      = owned_values;
     old          = owned_values;
@@ -460,6 +500,7 @@ namespace FluidSurface
       , psi(flow_fe.n_dofs_per_cell())
       , grad_psi(flow_fe.n_dofs_per_cell())
       , normal_phi(flow_fe.n_dofs_per_cell())
+      , multiplier(flow_fe.n_dofs_per_cell())
       , old_u(quadrature.size())
       , older_u(quadrature.size())
       , smooth_normal(quadrature.size())
@@ -485,6 +526,7 @@ namespace FluidSurface
     std::vector<double>       psi;
     std::vector<Tensor<1, 3>> grad_psi;
     std::vector<double>       normal_phi;
+    std::vector<double>       multiplier; ///< shape values of λ (Tangentiality::multiplier)
     std::vector<Tensor<1, 3>> old_u, older_u, smooth_normal;
   };
 
@@ -538,7 +580,7 @@ namespace FluidSurface
     const double                     tau    = current_tau;
     const std::array<double, 3>      bdf    = bdf_coefficients(parameters.scheme, n_steps_done);
     const bool                       build_preconditioner =
-      copy.with_matrix && parameters.solver == LinearSolver::block_preconditioned;
+      copy.with_matrix && parameters.solver == LinearSolver::block_preconditioned && preconditioner_outdated;
 
     copy.matrix                     = 0;
     copy.velocity_and_pressure_mass = 0;
@@ -567,7 +609,9 @@ namespace FluidSurface
     double cell_area = 0;
     for (unsigned int q = 0; q < n_q; ++q)
       cell_area += fv.JxW(q);
-    const double penalty = parameters.penalty_factor * std::pow(cell_area, -0.5 * parameters.penalty_exponent);
+    const bool   with_multiplier = parameters.tangentiality == Tangentiality::multiplier;
+    const double penalty =
+      with_multiplier ? 0.0 : parameters.penalty_factor * std::pow(cell_area, -0.5 * parameters.penalty_exponent);
 
     for (unsigned int q = 0; q < n_q; ++q)
       {
@@ -608,6 +652,7 @@ namespace FluidSurface
             scratch.psi[i]        = fv[pressure].value(i, q);
             scratch.grad_psi[i]   = fv[pressure].gradient(i, q);
             scratch.normal_phi[i] = SO::normal_component(scratch.phi[i], n_penalty);
+            scratch.multiplier[i] = with_multiplier ? fv[FEValuesExtractors::Scalar(4)].value(i, q) : 0.0;
           }
 
         for (unsigned int a = 0; a < copy.killing_moments.size(); ++a)
@@ -634,7 +679,9 @@ namespace FluidSurface
                   convection = 0.5 * (SO::convective_derivative(scratch.grad_phi[j], w) * scratch.phi[i] -
                                       grad_i_w * scratch.phi[j]);
                 copy.matrix(i, j) += (velocity_block + convection - scratch.div_phi[i] * scratch.psi[j] -
-                                      scratch.psi[i] * scratch.div_phi[j]) *
+                                      scratch.psi[i] * scratch.div_phi[j] +
+                                      scratch.normal_phi[i] * scratch.multiplier[j] +
+                                      scratch.multiplier[i] * scratch.normal_phi[j]) *
                                      dA;
                 if (build_preconditioner)
                   {
@@ -677,17 +724,33 @@ namespace FluidSurface
       }
     // A_R = QᵀAQ with Q(a, b) = R_k[c_a][c_b] for DoFs a, b at the same node k (c: Cartesian component
     // of a, frame direction of b); the identity on the pressure DoFs.
+    // Q has at most 3 entries per column, so A_R = Qᵀ(AQ) costs 6m² operations.
     const auto rotate = [&](const std::vector<unsigned int> &dofs, const FullMatrix<double> &A, FullMatrix<double> &A_R) {
-      FullMatrix<double> Q(dofs.size(), dofs.size());
-      for (unsigned int a = 0; a < dofs.size(); ++a)
-        for (unsigned int b = 0; b < dofs.size(); ++b)
-          if (lor_dof_node[dofs[a]] == numbers::invalid_unsigned_int)
-            Q(a, b) = (a == b);
-          else if (lor_dof_node[dofs[a]] == lor_dof_node[dofs[b]])
-            Q(a, b) = frames[lor_dof_node[dofs[a]]][fe.system_to_component_index(dofs[a]).first]
-                            [fe.system_to_component_index(dofs[b]).first];
-      A_R = 0;
-      A_R.triple_product(A, Q, Q, true, false); // adds QᵀAQ
+      const unsigned int                                       m = dofs.size();
+      std::vector<std::array<std::pair<unsigned int, double>, 3>> column(m);
+      std::vector<unsigned int>                                count(m, 0);
+      for (unsigned int b = 0; b < m; ++b)
+        if (lor_dof_node[dofs[b]] == numbers::invalid_unsigned_int)
+          column[b][count[b]++] = {b, 1.0};
+        else
+          for (unsigned int a = 0; a < m; ++a)
+            if (lor_dof_node[dofs[a]] == lor_dof_node[dofs[b]])
+              column[b][count[b]++] = {a,
+                                       frames[lor_dof_node[dofs[a]]][fe.system_to_component_index(dofs[a]).first]
+                                             [fe.system_to_component_index(dofs[b]).first]};
+      FullMatrix<double> AQ(m, m);
+      for (unsigned int i = 0; i < m; ++i)
+        for (unsigned int b = 0; b < m; ++b)
+          for (unsigned int t = 0; t < count[b]; ++t)
+            AQ(i, b) += A(i, column[b][t].first) * column[b][t].second;
+      for (unsigned int a = 0; a < m; ++a)
+        for (unsigned int b = 0; b < m; ++b)
+          {
+            double sum = 0;
+            for (unsigned int t = 0; t < count[a]; ++t)
+              sum += column[a][t].second * AQ(column[a][t].first, b);
+            A_R(a, b) = sum;
+          }
     };
 
     if (!lor)
@@ -779,7 +842,7 @@ namespace FluidSurface
     if (copy.with_matrix)
       {
         constraints.distribute_local_to_global(copy.matrix, copy.rhs, copy.indices, system_matrix, system_rhs);
-        if (parameters.solver == LinearSolver::block_preconditioned)
+        if (parameters.solver == LinearSolver::block_preconditioned && preconditioner_outdated)
           {
             constraints.distribute_local_to_global(copy.velocity_and_pressure_mass,
                                                    copy.indices,
@@ -807,7 +870,7 @@ namespace FluidSurface
     if (assemble_matrix)
       {
         system_matrix = 0;
-        if (parameters.solver == LinearSolver::block_preconditioned)
+        if (parameters.solver == LinearSolver::block_preconditioned && preconditioner_outdated)
           {
             preconditioner_matrix = 0;
             pressure_laplace      = 0;
@@ -829,7 +892,7 @@ namespace FluidSurface
     if (assemble_matrix)
       {
         system_matrix.compress(VectorOperation::add);
-        if (parameters.solver == LinearSolver::block_preconditioned)
+        if (parameters.solver == LinearSolver::block_preconditioned && preconditioner_outdated)
           {
             preconditioner_matrix.compress(VectorOperation::add);
             pressure_laplace.compress(VectorOperation::add);
@@ -864,7 +927,7 @@ namespace FluidSurface
         const Tensor<1, 3> axis = killing[a];
         rotation.velocity = [axis](const Point<3> &x, const double) { return cross_product_3d(axis, x); };
         VectorType interpolant(owned, communicator);
-        VectorTools::interpolate(geometry.mapping(), flow_dofs, FlowFunction(rotation, 0.0), interpolant);
+        VectorTools::interpolate(geometry.mapping(), flow_dofs, FlowFunction(rotation, 0.0, fe.n_components()), interpolant);
         moments(a) = interpolant * unconstrained_rhs;
         for (unsigned int b = 0; b < n_k; ++b)
           gram(a, b) = interpolant * killing_moments[b];
@@ -1051,10 +1114,11 @@ namespace FluidSurface
                           if (c == 0 && !node_listed[row])
                             {
                               node_listed[row] = true;
-                              std::array<types::global_dof_index, 3> node_dofs;
+                              std::array<types::global_dof_index, 3> node_dofs; // local indices
                               for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
                                 if (lor_dof_node[j] == lor_dof_node[i])
-                                  node_dofs[fe.system_to_component_index(j).first] = indices[j];
+                                  node_dofs[fe.system_to_component_index(j).first] =
+                                    owned_velocity.index_within_set(indices[j]);
                               lor_nodes.emplace_back(node_dofs, frame);
                             }
                           continue;
@@ -1104,14 +1168,15 @@ namespace FluidSurface
       {
         // The AMG matrix is written in the node frames: Ã⁻¹ = R Ã_R⁻¹ Rᵀ.
         const auto rotate = [this](VectorType &v, const bool transpose) {
+          double *values = v.begin(); // the owned entries, in the order of owned_partitioning[0]
           for (const auto &[dofs, frame] : lor_nodes)
             {
               Tensor<1, 3> in, out;
               for (unsigned int c = 0; c < 3; ++c)
-                in[c] = v[dofs[c]];
+                in[c] = values[dofs[c]];
               out = transpose ? in * frame : frame * in; // in * frame = frameᵀ in
               for (unsigned int c = 0; c < 3; ++c)
-                v[dofs[c]] = out[c];
+                values[dofs[c]] = out[c];
             }
         };
         velocity_inverse = [inner = velocity_inverse, rotate](VectorType &dst, const VectorType &src) {
@@ -1194,6 +1259,7 @@ namespace FluidSurface
   SurfaceFlow::solve_stationary()
   {
     Timer timer;
+    preconditioner_outdated = true;
     assemble(0.0, 1.0, true);
     const double assemble_time = timer.wall_time();
     SolveInfo    info          = solve(true, true);
@@ -1210,6 +1276,9 @@ namespace FluidSurface
     const bool   matrix_changed       = with_convection || coefficients_changed;
     assembled_tau                     = tau;
     assembled_alpha0                  = alpha0;
+    // The preconditioner matrices (A without convection, M_p, L_p) change only with τ and α₀; they are
+    // assembled only when the AMG hierarchies are rebuilt.
+    preconditioner_outdated = coefficients_changed || !velocity_amg;
     Timer timer;
     assemble(time, tau, matrix_changed);
     const double assemble_time = timer.wall_time();

@@ -94,6 +94,31 @@ for r in rows:
         prev = r
 table(["β", "ref", "DoFs", "|F(1)−F(0)|/F(0)", "rate", "‖u(1)−u_h(1)‖", "‖u_h·ν‖", "LU", "GMRES its", "wall [s]"], lines)
 
+sel = [r for r in rows if r["case"].startswith("multiplier")]
+if sel:
+    print("**Penalty vs Lagrange multiplier** (sphere, k = 2, direct KLU; stationary: manufactured solution, "
+          "Re = 1; Killing: u = e_z × x, Re = 10, BDF2, τ = 0.05, t ∈ [0, 1]; penalty β = 10 unless stated)\n")
+    lines = []
+    for ref in sorted({r["refinement"] for r in sel}, key=int):
+        pen = [r for r in rows if r["case"] == "convergence" and r["shape"] == "sphere" and r["k"] == "2"
+               and r["refinement"] == ref]
+        cands = [("penalty", pen[0] if pen else None)]
+        cands += [(r["case"].split()[1] + " multiplier", r) for r in sel
+                  if r["case"].endswith("stationary") and r["refinement"] == ref]
+        for name, r in cands:
+            if r:
+                lines.append(["stationary", name, ref, r["dofs"], f"{f(r['velocity L2']):.3e}", f"{f(r['gradient L2']):.3e}",
+                              f"{f(r['pressure L2']):.3e}", f"{f(r['normal L2']):.3e}", "", f"{f(r['wall time']):.3g}"])
+    for ref in sorted({r["refinement"] for r in sel}, key=int):
+        cands = [("penalty β = " + r["penalty factor"], r) for r in rows if r["case"] == "killing" and r["refinement"] == ref]
+        cands += [(r["case"].split()[1] + " multiplier", r) for r in sel
+                  if r["case"].endswith("killing") and r["refinement"] == ref]
+        for name, r in cands:
+            lines.append(["Killing", name, ref, r["dofs"], f"{f(r['velocity L2']):.3e}", "", "", f"{f(r['normal L2']):.3e}",
+                          f"{f(r['energy change']):.3e}", f"{f(r['wall time']):.3g}"])
+    table(["problem", "tangentiality", "ref", "DoFs", "‖u−u_h‖", "‖∇_P(u−u_h)‖", "‖p−p_h‖", "‖u_h·ν‖",
+           "|F(1)−F(0)|/F(0)", "wall [s]"], lines)
+
 for l in ("2", "3"):
     print(f"**Decaying mode l = {l}** (Navier–Stokes, Re = 10, exact rate λ = {f([r for r in rows if r['case'].startswith('decay l=' + l)][0]['exact rate']):.4f})\n")
     lines = []

@@ -67,7 +67,13 @@ namespace FluidSurface
       bdf1,
       bdf2
     };
-    /// The normal n of the tangentiality penalty η(u·n, v·n).
+    /// How u·n = 0 is imposed.
+    enum class Tangentiality
+    {
+      penalty,   ///< η(u·n, v·n), η = β h_K^{−q}
+      multiplier ///< a Lagrange multiplier λ ∈ Q1 or Q2: (λ, v·n) + (u·n, μ) (direct solver only)
+    };
+    /// The normal n of the tangentiality penalty η(u·n, v·n) (or of the multiplier constraint).
     enum class PenaltyNormal
     {
       exact,      ///< normal of the analytic surface (set_exact_normal)
@@ -113,6 +119,8 @@ namespace FluidSurface
       bool          inertia              = true; ///< time derivative ∂_t u on/off
       bool          convection           = true; ///< convection ∇_w u on/off
       TimeScheme    scheme               = TimeScheme::bdf2;
+      Tangentiality tangentiality        = Tangentiality::penalty;
+      unsigned int  multiplier_degree    = 1; ///< polynomial degree of the multiplier λ ∈ Q_d
       PenaltyNormal penalty_normal       = PenaltyNormal::exact;
       double        penalty_factor       = 10.0; ///< β of η = β h^{−q}
       double        penalty_exponent     = 3.0;  ///< q of η = β h^{−q}
@@ -202,7 +210,7 @@ namespace FluidSurface
     {
       return flow_dofs;
     }
-    /// (u, p), ghosted; components 0–2 velocity, 3 pressure.
+    /// (u, p), ghosted; components 0–2 velocity, 3 pressure (4: the tangentiality multiplier λ, if any).
     const VectorType &
     solution() const
     {
@@ -276,7 +284,8 @@ namespace FluidSurface
     std::vector<std::vector<unsigned int>> lor_subcell_dofs, lor_subcell_points;
     std::vector<unsigned int>              lor_dof_node; ///< local velocity DoF → its node (0–8) in the cell
     bool hanging_nodes = false; ///< the mesh has hanging nodes (node frames are then Cartesian)
-    /// Velocity nodes (their x, y, z DoFs) and frames [t₁ t₂ n] of the low-order-refined AMG.
+    /// Owned velocity nodes (the local indices of their x, y, z DoFs in the velocity block) and their
+    /// frames [t₁ t₂ n], for the velocity AMG in node frames.
     std::vector<std::pair<std::array<dealii::types::global_dof_index, 3>, dealii::Tensor<2, 3>>> lor_nodes;
     dealii::DoFHandler<2, 3>          flow_dofs;
     dealii::types::global_dof_index   n_u = 0, n_p = 0;
@@ -307,6 +316,7 @@ namespace FluidSurface
     std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG>     pressure_mass_amg;
     std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG>     pressure_laplace_amg;
     bool                                                           matrix_assembled = false;
+    bool preconditioner_outdated = true; ///< the next assembly must build the preconditioner matrices
   };
 
   /**
