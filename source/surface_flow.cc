@@ -176,8 +176,8 @@ namespace FluidSurface
     if (tangentiality == Tangentiality::multiplier && solver != LinearSolver::direct)
       throw_invalid_entry("flow/tangentiality",
                           "multiplier",
-                          "penalty with `linear solver = block preconditioned` (the multiplier is implemented for "
-                          "the direct solver only)");
+                          "penalty: the multiplier is implemented for `linear solver = direct` only, not for "
+                          "block preconditioned");
     prm.leave_subsection();
   }
 
