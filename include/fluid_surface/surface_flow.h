@@ -53,7 +53,8 @@ namespace FluidSurface
    * σ(u) = ½(∇_P u + ∇_P uᵀ), ∇_P u = P ∇_C u, div_P u = tr ∇_C u. Tangentiality
    * u·ν = 0 is imposed by the penalty η = β h_K^{−q} with a normal n that can be
    * the exact normal of the analytic surface, the continuous normal ñ of the
-   * geometry, or the cell normal ν_h. Convection is the skew-symmetric form
+   * geometry, or the cell normal ν_h; or by a Lagrange multiplier λ ∈ Q_d,
+   * (λ, v·n) + (u·n, μ) (direct solver only). Convection is the skew-symmetric form
    * c(w; u, v) = ½[(∇_w u, v) − (∇_w v, u)] with w extrapolated from the old
    * steps (energy neutral: c(w; u, u) = 0). Time derivative: BDF1 or BDF2.
    * The mass and convection terms are assembled only when switched on.
