@@ -328,6 +328,11 @@ namespace FluidSurface
         std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
           3, DataComponentInterpretation::component_is_part_of_vector);
         interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+        if (flow.dof_handler().get_fe().n_components() == 5)
+          {
+            names.emplace_back("tangentiality_multiplier");
+            interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+          }
         data_out.add_data_vector(flow.dof_handler(), flow.solution(), names, interpretation);
         data_out.add_data_vector(flow.dof_handler(), flow.solution(), speed);
       });

@@ -1,8 +1,10 @@
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/work_stream.h>
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_q_iso_q1.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -56,8 +58,14 @@ namespace FluidSurface
                       "(3u^{m+1} − 4u^m + u^{m−1})/(2τ) (first step BDF1).");
     prm.declare_entry("tangentiality",
                       "penalty",
-                      Patterns::Selection("penalty"),
-                      "How u·ν = 0 is imposed: penalty η(u·n, v·n), η = β h_K^{−q}.");
+                      Patterns::Selection("penalty|multiplier"),
+                      "How u·n = 0 is imposed: penalty η(u·n, v·n), η = β h_K^{−q}; or multiplier, a Lagrange "
+                      "multiplier λ ∈ Q_d (d = `multiplier degree`) with (λ, v·n) + (u·n, μ) added to the "
+                      "saddle-point system (direct solver only; n as in `penalty normal`).");
+    prm.declare_entry("multiplier degree",
+                      "1",
+                      Patterns::Integer(1, 2),
+                      "Degree d of the tangentiality multiplier λ ∈ Q_d (tangentiality = multiplier).");
     prm.declare_entry("penalty normal",
                       "exact",
                       Patterns::Selection("exact|continuous|cell"),
@@ -89,8 +97,27 @@ namespace FluidSurface
                       "1e-4",
                       Patterns::Double(0, 1),
                       "ML aggregation threshold θ of the velocity AMG (connections weaker than θ are dropped "
-                      "when aggregating). Stationary sphere problem, GMRES iterations at refinements 3–5: "
-                      "35, 58, 139 with θ = 0.02; 30, 44, 46 with θ = 1e-4 (benchmarks/surface_stokes).");
+                      "when aggregating). Stationary sphere problem, Cartesian components, GMRES iterations at "
+                      "refinements 3–5: 35, 58, 139 with θ = 0.02; 30, 44, 46 with θ = 1e-4 "
+                      "(benchmarks/surface_stokes).");
+    prm.declare_entry("velocity AMG operator",
+                      "Q2",
+                      Patterns::Selection("Q2|low-order refined"),
+                      "Matrix on which the velocity AMG of the block preconditioner is built: Q2, the velocity "
+                      "block A itself; low-order refined, the same operator (2/Re)(σ(u), σ(v)) + η(u·n, v·n) "
+                      "[+ (α₀/τ)(u, v)] assembled with piecewise bilinear functions on the 4 sub-cells of "
+                      "each cell (the Q2 nodes are the vertices of the sub-cells, so the DoFs are the same); "
+                      "its V-cycle then preconditions the Q2 block. Stationary sphere, node frames, GMRES "
+                      "iterations at refinements 3–6: Q2 29, 26, 31, 33; low-order refined 43, 36, 38 at "
+                      "refinements 3–5 (benchmarks/surface_stokes).");
+    prm.declare_entry("velocity AMG node frames",
+                      "true",
+                      Patterns::Bool(),
+                      "Build the velocity AMG on the matrix written in node frames [t₁ t₂ n] (tangential and "
+                      "normal components at each node, Cartesian at constrained nodes) instead of Cartesian "
+                      "components; the penalty η(u·n, v·n) then acts on the normal DoFs only. Stationary "
+                      "sphere, GMRES iterations at refinements 3–6 (Q2 operator): 30, 44, 46, 54 Cartesian; "
+                      "29, 26, 31, 33 in node frames (benchmarks/surface_stokes).");
     prm.declare_entry("direct solver",
                       "Amesos_Klu",
                       Patterns::Selection("Amesos_Klu|Amesos_Mumps"),
@@ -127,12 +154,17 @@ namespace FluidSurface
     const std::string normal = prm.get("penalty normal");
     penalty_normal   = normal == "exact" ? PenaltyNormal::exact :
                        normal == "continuous" ? PenaltyNormal::continuous : PenaltyNormal::cell;
+    tangentiality    = prm.get("tangentiality") == "penalty" ? Tangentiality::penalty : Tangentiality::multiplier;
+    multiplier_degree = prm.get_integer("multiplier degree");
     penalty_factor   = prm.get_double("penalty factor");
     penalty_exponent = prm.get_double("penalty exponent");
     solver = prm.get("linear solver") == "direct" ? LinearSolver::direct : LinearSolver::block_preconditioned;
     direct_solver_name   = prm.get("direct solver");
     amg_smoother         = prm.get("velocity AMG smoother");
     amg_aggregation_threshold = prm.get_double("velocity AMG aggregation threshold");
+    amg_operator = prm.get("velocity AMG operator") == "Q2" ? VelocityAMGOperator::q2 :
+                                                              VelocityAMGOperator::low_order_refined;
+    amg_node_frames = prm.get_bool("velocity AMG node frames");
     reuse_factorization  = prm.get_bool("reuse factorization");
     max_reuse_iterations = prm.get_integer("max reuse iterations");
     tolerance            = prm.get_double("linear solver tolerance");
@@ -141,6 +173,11 @@ namespace FluidSurface
       throw_invalid_entry("flow/Re", prm.get("Re"), "a positive Reynolds number");
     if (!(penalty_factor > 0))
       throw_invalid_entry("flow/penalty factor", prm.get("penalty factor"), "a positive β");
+    if (tangentiality == Tangentiality::multiplier && solver != LinearSolver::direct)
+      throw_invalid_entry("flow/tangentiality",
+                          "multiplier",
+                          "penalty: the multiplier is implemented for `linear solver = direct` only, not for "
+                          "block preconditioned");
     prm.leave_subsection();
   }
 
@@ -162,13 +199,64 @@ namespace FluidSurface
     : SurfaceFlow(geometry, Parameters())
   {}
 
+  namespace
+  {
+    /// [velocity]³ × Q1 pressure, × Q_d multiplier with Tangentiality::multiplier.
+    std::vector<const FiniteElement<2, 3> *>
+    flow_elements(const FiniteElement<2, 3> &velocity, const SurfaceFlow::Parameters &parameters)
+    {
+      static const FE_Q<2, 3> q1(1), q2(2);
+      if (parameters.tangentiality == SurfaceFlow::Tangentiality::multiplier)
+        return {&velocity, &q1, parameters.multiplier_degree == 2 ? &q2 : &q1};
+      return {&velocity, &q1};
+    }
+    std::vector<unsigned int>
+    flow_multiplicities(const SurfaceFlow::Parameters &parameters)
+    {
+      return std::vector<unsigned int>(parameters.tangentiality == SurfaceFlow::Tangentiality::multiplier ? 3 : 2, 1);
+    }
+  } // namespace
+
   SurfaceFlow::SurfaceFlow(const SurfaceGeometry &geometry, const Parameters &parameters)
     : geometry(geometry)
     , communicator(geometry.get_communicator())
     , parameters(parameters)
-    , fe(FESystem<2, 3>(FE_Q<2, 3>(2), 3), 1, FE_Q<2, 3>(1), 1)
+    , fe(flow_elements(FESystem<2, 3>(FE_Q<2, 3>(2), 3), parameters), flow_multiplicities(parameters))
+    , lor_fe(flow_elements(FESystem<2, 3>(FE_Q_iso_Q1<2, 3>(2), 3), parameters), flow_multiplicities(parameters))
     , flow_dofs(geometry.triangulation())
-  {}
+  {
+    // Sub-cell s = (s_x, s_y) of the reference cell holds the nodes and quadrature points with
+    // coordinates in [s_x/2, (s_x+1)/2] × [s_y/2, (s_y+1)/2]; its 4 nodes carry 12 velocity DoFs.
+    const std::vector<Point<2>> &nodes  = fe.base_element(0).get_unit_support_points();
+    const Quadrature<2>          quadrature = lor_quadrature();
+    const std::vector<Point<2>> &points     = quadrature.get_points();
+    lor_subcell_dofs.assign(4, {});
+    lor_dof_node.assign(fe.n_dofs_per_cell(), numbers::invalid_unsigned_int);
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      if (fe.system_to_base_index(i).first.first == 0)
+        lor_dof_node[i] = fe.base_element(0).system_to_base_index(fe.system_to_base_index(i).second).second;
+    lor_subcell_points.assign(4, {});
+    const auto inside = [](const Point<2> &x, const unsigned int s) {
+      return std::abs(x[0] - 0.25 - 0.5 * (s % 2)) <= 0.25 + 1e-12 && std::abs(x[1] - 0.25 - 0.5 * (s / 2)) <= 0.25 + 1e-12;
+    };
+    for (unsigned int s = 0; s < 4; ++s)
+      {
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          if (fe.system_to_base_index(i).first.first == 0 && inside(nodes[fe.system_to_base_index(i).second], s))
+            lor_subcell_dofs[s].push_back(i);
+        for (unsigned int q = 0; q < points.size(); ++q)
+          if (inside(points[q], s))
+            lor_subcell_points[s].push_back(q);
+        AssertThrow(lor_subcell_dofs[s].size() == 12 && 4 * lor_subcell_points[s].size() == points.size(),
+                    ExcInternalError());
+      }
+  }
+
+  Quadrature<2>
+  SurfaceFlow::lor_quadrature()
+  {
+    return QIterated<2>(QGauss<1>(2), 2);
+  }
 
   std::string
   SurfaceFlow::description() const
@@ -181,9 +269,16 @@ namespace FluidSurface
         << (parameters.penalty_normal == PenaltyNormal::exact ?
               "exact" :
               parameters.penalty_normal == PenaltyNormal::continuous ? "continuous" : "cell")
-        << " normal, "
-        << (parameters.solver == LinearSolver::direct ? parameters.direct_solver_name :
-                                                        std::string("GMRES + block AMG"));
+        << " normal"
+        << (parameters.tangentiality == Tangentiality::multiplier ?
+              " (Lagrange multiplier λ ∈ Q" + std::to_string(parameters.multiplier_degree) + " instead)" :
+              std::string())
+        << ", "
+        << (parameters.solver == LinearSolver::direct ?
+              parameters.direct_solver_name :
+              std::string("GMRES + block AMG (") +
+                (parameters.amg_operator == VelocityAMGOperator::q2 ? "Q2" : "low-order refined") +
+                (parameters.amg_node_frames ? ", node frames)" : ", Cartesian)"));
     return out.str();
   }
 
@@ -209,6 +304,9 @@ namespace FluidSurface
   void
   SurfaceFlow::setup(const std::vector<Tensor<1, 3>> &killing_axes)
   {
+    if ((parameters.tangentiality == Tangentiality::multiplier) != (fe.n_components() == 5))
+      throw InputError("flow/tangentiality was changed after the flow solver was created; parse the parameters "
+                       "before constructing SurfaceFlow");
     if (parameters.penalty_normal == PenaltyNormal::exact && !exact_normal)
       throw InputError("flow/penalty normal = exact needs the normal of an analytic surface; this scene has "
                        "none (use continuous or cell)");
@@ -225,6 +323,7 @@ namespace FluidSurface
     owned_partitioning    = {owned.get_view(0, n_u), owned.get_view(n_u, n_u + n_p)};
     relevant_partitioning = {relevant.get_view(0, n_u), relevant.get_view(n_u, n_u + n_p)};
 
+    hanging_nodes = geometry.triangulation().has_hanging_nodes();
     constraints.clear();
     constraints.reinit(relevant);
     DoFTools::make_hanging_node_constraints(flow_dofs, constraints);
@@ -249,6 +348,27 @@ namespace FluidSurface
         SparsityTools::distribute_sparsity_pattern(bdsp, owned, communicator, relevant);
         preconditioner_matrix.reinit(owned_partitioning, bdsp, communicator);
         pressure_laplace.reinit(owned_partitioning, bdsp, communicator);
+        if (parameters.amg_operator == VelocityAMGOperator::low_order_refined)
+          {
+            // Couplings of the sub-cells only: 9 nodes per row instead of 25. The velocity DoFs are
+            // the first n_u, so the constraints apply unchanged.
+            DynamicSparsityPattern               lor_dsp(relevant_partitioning[0]);
+            std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell()), subcell(12);
+            for (const auto &cell : flow_dofs.active_cell_iterators())
+              if (cell->is_locally_owned())
+                {
+                  cell->get_dof_indices(indices);
+                  for (const std::vector<unsigned int> &dofs : lor_subcell_dofs)
+                    {
+                      for (unsigned int a = 0; a < 12; ++a)
+                        subcell[a] = indices[dofs[a]];
+                      constraints.add_entries_local_to_global(subcell, lor_dsp, false);
+                    }
+                }
+            SparsityTools::distribute_sparsity_pattern(lor_dsp, owned_partitioning[0], communicator,
+                                                       relevant_partitioning[0]);
+            lor_velocity_matrix.reinit(owned_partitioning[0], owned_partitioning[0], lor_dsp, communicator);
+          }
       }
     system_rhs.reinit(owned, communicator);
     current.reinit(owned, relevant, communicator);
@@ -316,8 +436,8 @@ namespace FluidSurface
     class FlowFunction : public Function<3>
     {
     public:
-      FlowFunction(const FlowField &field, const double time)
-        : Function<3>(4, time)
+      FlowFunction(const FlowField &field, const double time, const unsigned int n_components)
+        : Function<3>(n_components, time)
         , field(field)
       {}
       double
@@ -325,6 +445,8 @@ namespace FluidSurface
       {
         if (component < 3)
           return field.velocity(x, this->get_time())[component];
+        if (component > 3) // the tangentiality multiplier
+          return 0.0;
         return field.pressure ? field.pressure(x, this->get_time()) : 0.0;
       }
 
@@ -337,7 +459,7 @@ namespace FluidSurface
   SurfaceFlow::set_initial_velocity(const FlowField &initial, const double time)
   {
     VectorType owned_values(owned, communicator);
-    VectorTools::interpolate(geometry.mapping(), flow_dofs, FlowFunction(initial, time), owned_values);
+    VectorTools::interpolate(geometry.mapping(), flow_dofs, FlowFunction(initial, time, fe.n_components()), owned_values);
     constraints.distribute(owned_values);
     current      = owned_values;
     old          = owned_values;
@@ -352,13 +474,25 @@ namespace FluidSurface
     ScratchData(const Mapping<2, 3>       &mapping,
                 const FiniteElement<2, 3> &flow_fe,
                 const FiniteElement<2, 3> &geometry_fe,
-                const Quadrature<2>       &quadrature)
+                const Quadrature<2>       &quadrature,
+                const FiniteElement<2, 3> &lor_fe,
+                const Quadrature<2>       &lor_quadrature)
       : flow_values(mapping,
                     flow_fe,
                     quadrature,
                     update_values | update_gradients | update_normal_vectors | update_JxW_values |
                       update_quadrature_points)
       , geometry_values(mapping, geometry_fe, quadrature, update_values)
+      , lor_values(mapping,
+                   lor_fe,
+                   lor_quadrature,
+                   update_values | update_gradients | update_normal_vectors | update_JxW_values |
+                     update_quadrature_points)
+      , lor_geometry_values(mapping,
+                            geometry_fe,
+                            Quadrature<2>(flow_fe.base_element(0).base_element(0).get_unit_support_points()),
+                            update_values | update_quadrature_points)
+      , lor_normal(lor_geometry_values.n_quadrature_points)
       , phi(flow_fe.n_dofs_per_cell())
       , grad_phi(flow_fe.n_dofs_per_cell())
       , sigma(flow_fe.n_dofs_per_cell())
@@ -366,6 +500,7 @@ namespace FluidSurface
       , psi(flow_fe.n_dofs_per_cell())
       , grad_psi(flow_fe.n_dofs_per_cell())
       , normal_phi(flow_fe.n_dofs_per_cell())
+      , multiplier(flow_fe.n_dofs_per_cell())
       , old_u(quadrature.size())
       , older_u(quadrature.size())
       , smooth_normal(quadrature.size())
@@ -374,11 +509,16 @@ namespace FluidSurface
       : ScratchData(other.flow_values.get_mapping(),
                     other.flow_values.get_fe(),
                     other.geometry_values.get_fe(),
-                    other.flow_values.get_quadrature())
+                    other.flow_values.get_quadrature(),
+                    other.lor_values.get_fe(),
+                    other.lor_values.get_quadrature())
     {}
 
     FEValues<2, 3>            flow_values;
     FEValues<2, 3>            geometry_values;
+    FEValues<2, 3>            lor_values;          ///< low-order-refined velocity operator
+    FEValues<2, 3>            lor_geometry_values; ///< ñ at the 9 nodes of the cell
+    std::vector<Tensor<1, 3>> lor_normal;
     std::vector<Tensor<1, 3>> phi;
     std::vector<Tensor<2, 3>> grad_phi;
     std::vector<Tensor<2, 3>> sigma;
@@ -386,6 +526,7 @@ namespace FluidSurface
     std::vector<double>       psi;
     std::vector<Tensor<1, 3>> grad_psi;
     std::vector<double>       normal_phi;
+    std::vector<double>       multiplier; ///< shape values of λ (Tangentiality::multiplier)
     std::vector<Tensor<1, 3>> old_u, older_u, smooth_normal;
   };
 
@@ -397,6 +538,8 @@ namespace FluidSurface
       , pressure_laplace(n, n)
       , rhs(n)
       , indices(n)
+      , lor_matrices(4, FullMatrix<double>(12, 12))
+      , lor_indices(4, std::vector<types::global_dof_index>(12))
     {}
     FullMatrix<double>                   matrix;
     FullMatrix<double>                   velocity_and_pressure_mass; ///< A_uu (no convection) ⊕ M_p
@@ -405,6 +548,9 @@ namespace FluidSurface
     std::vector<Vector<double>>          killing_moments; ///< (a × x, φ_i) per Killing axis a
     std::vector<types::global_dof_index> indices;
     bool                                 with_matrix = true;
+    bool                                 with_lor    = false; ///< the sub-cell matrices are filled
+    std::vector<FullMatrix<double>>                   lor_matrices; ///< per sub-cell, its 12 velocity DoFs
+    std::vector<std::vector<types::global_dof_index>> lor_indices;
   };
 
   namespace
@@ -434,7 +580,7 @@ namespace FluidSurface
     const double                     tau    = current_tau;
     const std::array<double, 3>      bdf    = bdf_coefficients(parameters.scheme, n_steps_done);
     const bool                       build_preconditioner =
-      copy.with_matrix && parameters.solver == LinearSolver::block_preconditioned;
+      copy.with_matrix && parameters.solver == LinearSolver::block_preconditioned && preconditioner_outdated;
 
     copy.matrix                     = 0;
     copy.velocity_and_pressure_mass = 0;
@@ -463,7 +609,9 @@ namespace FluidSurface
     double cell_area = 0;
     for (unsigned int q = 0; q < n_q; ++q)
       cell_area += fv.JxW(q);
-    const double penalty = parameters.penalty_factor * std::pow(cell_area, -0.5 * parameters.penalty_exponent);
+    const bool   with_multiplier = parameters.tangentiality == Tangentiality::multiplier;
+    const double penalty =
+      with_multiplier ? 0.0 : parameters.penalty_factor * std::pow(cell_area, -0.5 * parameters.penalty_exponent);
 
     for (unsigned int q = 0; q < n_q; ++q)
       {
@@ -504,6 +652,7 @@ namespace FluidSurface
             scratch.psi[i]        = fv[pressure].value(i, q);
             scratch.grad_psi[i]   = fv[pressure].gradient(i, q);
             scratch.normal_phi[i] = SO::normal_component(scratch.phi[i], n_penalty);
+            scratch.multiplier[i] = with_multiplier ? fv[FEValuesExtractors::Scalar(4)].value(i, q) : 0.0;
           }
 
         for (unsigned int a = 0; a < copy.killing_moments.size(); ++a)
@@ -530,7 +679,9 @@ namespace FluidSurface
                   convection = 0.5 * (SO::convective_derivative(scratch.grad_phi[j], w) * scratch.phi[i] -
                                       grad_i_w * scratch.phi[j]);
                 copy.matrix(i, j) += (velocity_block + convection - scratch.div_phi[i] * scratch.psi[j] -
-                                      scratch.psi[i] * scratch.div_phi[j]) *
+                                      scratch.psi[i] * scratch.div_phi[j] +
+                                      scratch.normal_phi[i] * scratch.multiplier[j] +
+                                      scratch.multiplier[i] * scratch.normal_phi[j]) *
                                      dA;
                 if (build_preconditioner)
                   {
@@ -544,11 +695,144 @@ namespace FluidSurface
               }
           }
       }
+
+    const bool lor = build_preconditioner && parameters.amg_operator == VelocityAMGOperator::low_order_refined;
+    copy.with_lor  = lor;
+    if (!build_preconditioner || !(lor || parameters.amg_node_frames))
+      return;
+
+    // Node frames [t₁ t₂ n] (Cartesian at constrained nodes): the AMG sees the velocity block in
+    // tangential and normal components, so the penalty, which acts on the normal component only,
+    // stays on the normal DoFs instead of mixing all three Cartesian ones.
+    std::array<Tensor<2, 3>, 9> frames;
+    for (unsigned int k = 0; k < 9; ++k)
+      frames[k] = Tensor<2, 3>(unit_symmetric_tensor<3>());
+    if (parameters.amg_node_frames)
+      {
+        const typename DoFHandler<2, 3>::active_cell_iterator geometry_cell(&geometry.triangulation(),
+                                                                            cell->level(),
+                                                                            cell->index(),
+                                                                            &geometry.dof_handler());
+        scratch.lor_geometry_values.reinit(geometry_cell);
+        scratch.lor_geometry_values[velocity].get_function_values(geometry.normal_field(), scratch.lor_normal);
+        std::array<bool, 9> constrained{};
+        for (unsigned int i = 0; i < n; ++i)
+          if (lor_dof_node[i] != numbers::invalid_unsigned_int && constraints.is_constrained(copy.indices[i]))
+            constrained[lor_dof_node[i]] = true;
+        for (unsigned int k = 0; k < 9; ++k)
+          frames[k] = lor_frame(scratch.lor_geometry_values.quadrature_point(k), scratch.lor_normal[k], constrained[k]);
+      }
+    // A_R = QᵀAQ with Q(a, b) = R_k[c_a][c_b] for DoFs a, b at the same node k (c: Cartesian component
+    // of a, frame direction of b); the identity on the pressure DoFs.
+    // Q has at most 3 entries per column, so A_R = Qᵀ(AQ) costs 6m² operations.
+    const auto rotate = [&](const std::vector<unsigned int> &dofs, const FullMatrix<double> &A, FullMatrix<double> &A_R) {
+      const unsigned int                                       m = dofs.size();
+      std::vector<std::array<std::pair<unsigned int, double>, 3>> column(m);
+      std::vector<unsigned int>                                count(m, 0);
+      for (unsigned int b = 0; b < m; ++b)
+        if (lor_dof_node[dofs[b]] == numbers::invalid_unsigned_int)
+          column[b][count[b]++] = {b, 1.0};
+        else
+          for (unsigned int a = 0; a < m; ++a)
+            if (lor_dof_node[dofs[a]] == lor_dof_node[dofs[b]])
+              column[b][count[b]++] = {a,
+                                       frames[lor_dof_node[dofs[a]]][fe.system_to_component_index(dofs[a]).first]
+                                             [fe.system_to_component_index(dofs[b]).first]};
+      FullMatrix<double> AQ(m, m);
+      for (unsigned int i = 0; i < m; ++i)
+        for (unsigned int b = 0; b < m; ++b)
+          for (unsigned int t = 0; t < count[b]; ++t)
+            AQ(i, b) += A(i, column[b][t].first) * column[b][t].second;
+      for (unsigned int a = 0; a < m; ++a)
+        for (unsigned int b = 0; b < m; ++b)
+          {
+            double sum = 0;
+            for (unsigned int t = 0; t < count[a]; ++t)
+              sum += column[a][t].second * AQ(column[a][t].first, b);
+            A_R(a, b) = sum;
+          }
+    };
+
+    if (!lor)
+      {
+        std::vector<unsigned int> all(n);
+        for (unsigned int i = 0; i < n; ++i)
+          all[i] = i;
+        const FullMatrix<double> cartesian(copy.velocity_and_pressure_mass);
+        rotate(all, cartesian, copy.velocity_and_pressure_mass);
+        return;
+      }
+
+    // Low-order refined: the velocity block (2/Re)(σ(u), σ(v)) + η(u·n, v·n) [+ (α₀/τ)(u, v)], with
+    // the η of this cell, for the piecewise bilinear functions on the 4 sub-cells.
+    FEValues<2, 3> &lv = scratch.lor_values;
+    lv.reinit(typename Triangulation<2, 3>::cell_iterator(cell));
+    const double       mass = with_time_derivative ? bdf[0] / tau : 0.0;
+    FullMatrix<double> cartesian(12, 12);
+    for (unsigned int s = 0; s < 4; ++s)
+      {
+        const std::vector<unsigned int> &dofs = lor_subcell_dofs[s];
+        cartesian                             = 0;
+        for (unsigned int a = 0; a < 12; ++a)
+          copy.lor_indices[s][a] = copy.indices[dofs[a]];
+        for (const unsigned int q : lor_subcell_points[s])
+          {
+            const double        dA = lv.JxW(q);
+            const Tensor<1, 3> &nu = lv.normal_vector(q);
+            // The exact normal if the penalty uses it, else ν_h (for a preconditioner, ñ and ν_h are alike).
+            const Tensor<1, 3> n_penalty =
+              parameters.penalty_normal == PenaltyNormal::exact ? exact_normal(lv.quadrature_point(q)) : nu;
+            for (unsigned int a = 0; a < 12; ++a)
+              {
+                scratch.phi[a]        = lv[velocity].value(dofs[a], q);
+                scratch.sigma[a]      = SO::strain_rate(lv[velocity].gradient(dofs[a], q), nu);
+                scratch.normal_phi[a] = SO::normal_component(scratch.phi[a], n_penalty);
+              }
+            for (unsigned int a = 0; a < 12; ++a)
+              for (unsigned int b = 0; b < 12; ++b)
+                cartesian(a, b) += ((2.0 / Re) * scalar_product(scratch.sigma[a], scratch.sigma[b]) +
+                                    penalty * scratch.normal_phi[a] * scratch.normal_phi[b] +
+                                    mass * scratch.phi[a] * scratch.phi[b]) *
+                                   dA;
+          }
+        rotate(dofs, cartesian, copy.lor_matrices[s]);
+      }
+  }
+
+  Tensor<2, 3>
+  SurfaceFlow::lor_frame(const Point<3> &x, const Tensor<1, 3> &smooth_normal, const bool cartesian) const
+  {
+    // Constrained nodes (the Killing pins, hanging nodes) keep the Cartesian frame, in which their
+    // constraints are written.
+    if (cartesian || hanging_nodes)
+      return Tensor<2, 3>(unit_symmetric_tensor<3>());
+    // Columns t₁, t₂, n with n the exact normal if there is one, else ñ; t₁ ⊥ the axis least aligned with n.
+    const Tensor<1, 3> n = exact_normal ? exact_normal(x) : Tensor<1, 3>(smooth_normal / smooth_normal.norm());
+    unsigned int       axis = 0;
+    for (unsigned int d = 1; d < 3; ++d)
+      if (std::abs(n[d]) < std::abs(n[axis]))
+        axis = d;
+    Tensor<1, 3> e;
+    e[axis]                = 1.0;
+    Tensor<1, 3> t1        = cross_product_3d(e, n);
+    t1                     /= t1.norm();
+    const Tensor<1, 3> t2  = cross_product_3d(n, t1);
+    Tensor<2, 3>       frame;
+    for (unsigned int c = 0; c < 3; ++c)
+      {
+        frame[c][0] = t1[c];
+        frame[c][1] = t2[c];
+        frame[c][2] = n[c];
+      }
+    return frame;
   }
 
   void
   SurfaceFlow::copy_local_to_global(const CopyData &copy)
   {
+    if (copy.with_lor)
+      for (unsigned int s = 0; s < 4; ++s)
+        constraints.distribute_local_to_global(copy.lor_matrices[s], copy.lor_indices[s], lor_velocity_matrix);
     if (!copy.killing_moments.empty())
       {
         unconstrained_rhs.add(copy.indices, copy.rhs);
@@ -558,7 +842,7 @@ namespace FluidSurface
     if (copy.with_matrix)
       {
         constraints.distribute_local_to_global(copy.matrix, copy.rhs, copy.indices, system_matrix, system_rhs);
-        if (parameters.solver == LinearSolver::block_preconditioned)
+        if (parameters.solver == LinearSolver::block_preconditioned && preconditioner_outdated)
           {
             constraints.distribute_local_to_global(copy.velocity_and_pressure_mass,
                                                    copy.indices,
@@ -586,10 +870,12 @@ namespace FluidSurface
     if (assemble_matrix)
       {
         system_matrix = 0;
-        if (parameters.solver == LinearSolver::block_preconditioned)
+        if (parameters.solver == LinearSolver::block_preconditioned && preconditioner_outdated)
           {
             preconditioner_matrix = 0;
             pressure_laplace      = 0;
+            if (parameters.amg_operator == VelocityAMGOperator::low_order_refined)
+              lor_velocity_matrix = 0;
           }
       }
     using CellFilter = FilteredIterator<typename DoFHandler<2, 3>::active_cell_iterator>;
@@ -601,15 +887,17 @@ namespace FluidSurface
                            ScratchData                                           &scratch,
                            CopyData &local) { local_assemble(cell, scratch, local); },
                     [this](const CopyData &local) { copy_local_to_global(local); },
-                    ScratchData(geometry.mapping(), fe, geometry.fe(), geometry.quadrature()),
+                    ScratchData(geometry.mapping(), fe, geometry.fe(), geometry.quadrature(), lor_fe, lor_quadrature()),
                     copy);
     if (assemble_matrix)
       {
         system_matrix.compress(VectorOperation::add);
-        if (parameters.solver == LinearSolver::block_preconditioned)
+        if (parameters.solver == LinearSolver::block_preconditioned && preconditioner_outdated)
           {
             preconditioner_matrix.compress(VectorOperation::add);
             pressure_laplace.compress(VectorOperation::add);
+            if (parameters.amg_operator == VelocityAMGOperator::low_order_refined)
+              lor_velocity_matrix.compress(VectorOperation::add);
           }
         matrix_assembled = true;
       }
@@ -639,7 +927,7 @@ namespace FluidSurface
         const Tensor<1, 3> axis = killing[a];
         rotation.velocity = [axis](const Point<3> &x, const double) { return cross_product_3d(axis, x); };
         VectorType interpolant(owned, communicator);
-        VectorTools::interpolate(geometry.mapping(), flow_dofs, FlowFunction(rotation, 0.0), interpolant);
+        VectorTools::interpolate(geometry.mapping(), flow_dofs, FlowFunction(rotation, 0.0, fe.n_components()), interpolant);
         moments(a) = interpolant * unconstrained_rhs;
         for (unsigned int b = 0; b < n_k; ++b)
           gram(a, b) = interpolant * killing_moments[b];
@@ -758,27 +1046,22 @@ namespace FluidSurface
         TrilinosWrappers::PreconditionAMG::AdditionalData velocity_data;
         velocity_data.constant_modes        = constant_modes;
         velocity_data.elliptic              = true;
-        velocity_data.higher_order_elements = true;
+        const bool lor = parameters.amg_operator == VelocityAMGOperator::low_order_refined;
+        const TrilinosWrappers::SparseMatrix &amg_matrix = lor ? lor_velocity_matrix : preconditioner_matrix.block(0, 0);
+        velocity_data.higher_order_elements = !lor;
         velocity_data.smoother_sweeps       = 2;
         velocity_data.aggregation_threshold = parameters.amg_aggregation_threshold;
         velocity_data.smoother_type         = parameters.amg_smoother.c_str();
         velocity_data.coarse_type           = "Amesos-KLU";
         velocity_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-        if (parameters.amg_smoother == "exact")
-          {
-            velocity_direct = std::make_unique<TrilinosWrappers::SolverDirect>(
-              direct_control, TrilinosWrappers::SolverDirect::AdditionalData(false, parameters.direct_solver_name));
-            velocity_direct->initialize(preconditioner_matrix.block(0, 0));
-          }
-        else
-          {
+        {
             // Near-null space of the velocity block: smooth tangential fields. Constant vectors are
             // not (their normal part meets the penalty), so ML gets the tangential projections P e_c
             // of the translations and of the rotations, P(a × x), at the velocity nodes (ML's
             // node-wise layout), with the continuous normal ñ.
             Teuchos::ParameterList              ml_parameters;
             std::unique_ptr<Epetra_MultiVector> translations;
-            velocity_data.set_parameters(ml_parameters, translations, preconditioner_matrix.block(0, 0));
+            velocity_data.set_parameters(ml_parameters, translations, amg_matrix);
             const unsigned int n_local = owned_velocity.n_elements();
             rigid_motions.assign(6 * n_local, 0.0);
             const Quadrature<2> velocity_nodes(fe.base_element(0).get_unit_support_points());
@@ -787,6 +1070,11 @@ namespace FluidSurface
                                        velocity_nodes,
                                        update_values | update_quadrature_points);
             std::vector<Tensor<1, 3>> normals(velocity_nodes.size());
+            // Low-order refined: the AMG works in the node frames [t₁ t₂ n] (see local_assemble), so
+            // the modes are given there too: (t₁·m, t₂·m, 0) for the tangential modes m.
+            lor_nodes.clear();
+            const bool        rotated = parameters.amg_node_frames;
+            std::vector<bool> node_listed(rotated ? n_local : 0, false);
             for (const auto &cell : flow_dofs.active_cell_iterators())
               if (cell->is_locally_owned())
                 {
@@ -807,6 +1095,34 @@ namespace FluidSurface
                       const unsigned int  row  = owned_velocity.index_within_set(indices[i]);
                       const Point<3>     &x    = node_values.quadrature_point(node);
                       const Tensor<2, 3>  P    = SO::projection(Tensor<1, 3>(normals[node] / normals[node].norm()));
+                      if (rotated)
+                        {
+                          bool constrained = false;
+                          for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+                            if (lor_dof_node[j] == lor_dof_node[i] && constraints.is_constrained(indices[j]))
+                              constrained = true;
+                          const Tensor<2, 3> frame = lor_frame(x, normals[node], constrained);
+                          for (unsigned int a = 0; a < 3; ++a)
+                            {
+                              Tensor<1, 3> axis, t;
+                              axis[a] = 1.0;
+                              for (unsigned int d = 0; d < 3; ++d)
+                                t[d] = frame[d][c];
+                              rigid_motions[a * n_local + row]       = t * (P * axis);
+                              rigid_motions[(3 + a) * n_local + row] = t * (P * cross_product_3d(axis, x));
+                            }
+                          if (c == 0 && !node_listed[row])
+                            {
+                              node_listed[row] = true;
+                              std::array<types::global_dof_index, 3> node_dofs; // local indices
+                              for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+                                if (lor_dof_node[j] == lor_dof_node[i])
+                                  node_dofs[fe.system_to_component_index(j).first] =
+                                    owned_velocity.index_within_set(indices[j]);
+                              lor_nodes.emplace_back(node_dofs, frame);
+                            }
+                          continue;
+                        }
                       for (unsigned int a = 0; a < 3; ++a)
                         {
                           Tensor<1, 3> axis;
@@ -820,7 +1136,15 @@ namespace FluidSurface
             ml_parameters.set("null space: dimension", 6);
             ml_parameters.set("null space: vectors", rigid_motions.data());
             ml_parameters.set("PDE equations", 3);
-            velocity_amg->initialize(preconditioner_matrix.block(0, 0), ml_parameters);
+            if (parameters.amg_smoother == "exact")
+              {
+                velocity_direct = std::make_unique<TrilinosWrappers::SolverDirect>(
+                  direct_control,
+                  TrilinosWrappers::SolverDirect::AdditionalData(false, parameters.direct_solver_name));
+                velocity_direct->initialize(amg_matrix);
+              }
+            else
+              velocity_amg->initialize(amg_matrix, ml_parameters);
           }
 
         TrilinosWrappers::PreconditionAMG::AdditionalData pressure_data;
@@ -840,6 +1164,28 @@ namespace FluidSurface
       velocity_inverse = [this](VectorType &dst, const VectorType &src) { velocity_direct->solve(dst, src); };
     else
       velocity_inverse = [this](VectorType &dst, const VectorType &src) { velocity_amg->vmult(dst, src); };
+    if (parameters.amg_node_frames)
+      {
+        // The AMG matrix is written in the node frames: Ã⁻¹ = R Ã_R⁻¹ Rᵀ.
+        const auto rotate = [this](VectorType &v, const bool transpose) {
+          double *values = v.begin(); // the owned entries, in the order of owned_partitioning[0]
+          for (const auto &[dofs, frame] : lor_nodes)
+            {
+              Tensor<1, 3> in, out;
+              for (unsigned int c = 0; c < 3; ++c)
+                in[c] = values[dofs[c]];
+              out = transpose ? in * frame : frame * in; // in * frame = frameᵀ in
+              for (unsigned int c = 0; c < 3; ++c)
+                values[dofs[c]] = out[c];
+            }
+        };
+        velocity_inverse = [inner = velocity_inverse, rotate](VectorType &dst, const VectorType &src) {
+          VectorType rotated(src);
+          rotate(rotated, true);
+          inner(dst, rotated);
+          rotate(dst, false);
+        };
+      }
     const BlockTriangularPreconditioner preconditioner(system_matrix,
                                                        velocity_inverse,
                                                        *pressure_mass_amg,
@@ -913,6 +1259,7 @@ namespace FluidSurface
   SurfaceFlow::solve_stationary()
   {
     Timer timer;
+    preconditioner_outdated = true;
     assemble(0.0, 1.0, true);
     const double assemble_time = timer.wall_time();
     SolveInfo    info          = solve(true, true);
@@ -929,6 +1276,9 @@ namespace FluidSurface
     const bool   matrix_changed       = with_convection || coefficients_changed;
     assembled_tau                     = tau;
     assembled_alpha0                  = alpha0;
+    // The preconditioner matrices (A without convection, M_p, L_p) change only with τ and α₀; they are
+    // assembled only when the AMG hierarchies are rebuilt.
+    preconditioner_outdated = coefficients_changed || !velocity_amg;
     Timer timer;
     assemble(time, tau, matrix_changed);
     const double assemble_time = timer.wall_time();

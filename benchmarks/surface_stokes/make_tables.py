@@ -32,24 +32,27 @@ for shape in ("sphere", "ellipsoid"):
         table(["ref", "DoFs", "‖u−u_h‖", "rate", "‖∇_P(u−u_h)‖", "rate", "‖p−p_h‖", "rate", "‖u_h·ν‖", "rate",
                "wall [s]"], lines)
 
-print("**Stationary solvers** (sphere; solver wall time incl. factorization or AMG setup, median of 3; "
-      "GMRES its with the velocity AMG aggregation threshold θ = 1e-4, in brackets θ = 0.02)\n")
+print("**Stationary solvers** (sphere; solver wall time incl. factorization or AMG setup, median of 3; block GMRES: "
+      "default velocity AMG = Q2 operator in node frames; its = GMRES iterations)\n")
 lines = []
-def pick(case, solver, k, ref):
-    sel = [r for r in rows if r["case"] == case and solver in r["solver"] and r["k"] == k and r["refinement"] == ref]
+def pick(case, solver, k, ref, amg=None):
+    sel = [r for r in rows if r["case"] == case and solver in r["solver"] and r["k"] == k and r["refinement"] == ref
+           and (amg is None or r.get("velocity AMG", "") == amg)]
     return sel[0] if sel else None
+def timed(r):
+    return [f"{f(r['solve time']):.3g}", r["total iterations"]] if r else ["", ""]
 for k in ("2", "3"):
     for ref in sorted({r["refinement"] for r in rows if r["case"] == "stationary solver"}, key=int):
         klu, mumps, block = (pick("stationary solver", name, k, ref) for name in ("Klu", "Mumps", "block"))
-        old = pick("stationary solver theta", "block", k, ref)
         if not block:
             continue
         lines.append([k, ref, block["dofs"], f"{f(block['gradient L2']):.3e}",
-                      f"{f(klu['solve time']):.3g}" if klu else "", f"{f(mumps['solve time']):.3g}" if mumps else "",
-                      f"{f(block['solve time']):.3g}", block["total iterations"] + (f" ({old['total iterations']})" if old else ""),
-                      f"{f(old['solve time']):.3g}" if old else ""])
-table(["k", "ref", "DoFs", "‖∇_P(u−u_h)‖", "KLU [s]", "MUMPS [s]", "block GMRES [s]", "GMRES its (θ = 0.02)",
-       "block, θ = 0.02 [s]"], lines)
+                      f"{f(klu['solve time']):.3g}" if klu else "", f"{f(mumps['solve time']):.3g}" if mumps else ""]
+                     + timed(block) + timed(pick("stationary solver amg", "block", k, ref, "Q2, Cartesian"))
+                     + timed(pick("stationary solver amg", "block", k, ref, "low-order refined, node frames"))
+                     + timed(pick("stationary solver amg", "block", k, ref, "low-order refined, Cartesian")))
+table(["k", "ref", "DoFs", "‖∇_P(u−u_h)‖", "KLU [s]", "MUMPS [s]", "block, Q2 node frames [s]", "its",
+       "Q2 Cartesian [s]", "its", "LOR node frames [s]", "its", "LOR Cartesian [s]", "its"], lines)
 
 print("**Fastest stationary option per accuracy** (sphere; accuracy = ‖∇_P(u−u_h)‖ of the refinement; wall time "
       "of the whole run, median of 3)\n")
@@ -91,6 +94,31 @@ for r in rows:
         prev = r
 table(["β", "ref", "DoFs", "|F(1)−F(0)|/F(0)", "rate", "‖u(1)−u_h(1)‖", "‖u_h·ν‖", "LU", "GMRES its", "wall [s]"], lines)
 
+sel = [r for r in rows if r["case"].startswith("multiplier")]
+if sel:
+    print("**Penalty vs Lagrange multiplier** (sphere, k = 2, direct KLU; stationary: manufactured solution, "
+          "Re = 1; Killing: u = e_z × x, Re = 10, BDF2, τ = 0.05, t ∈ [0, 1]; penalty β = 10 unless stated)\n")
+    lines = []
+    for ref in sorted({r["refinement"] for r in sel}, key=int):
+        pen = [r for r in rows if r["case"] == "convergence" and r["shape"] == "sphere" and r["k"] == "2"
+               and r["refinement"] == ref]
+        cands = [("penalty", pen[0] if pen else None)]
+        cands += [(r["case"].split()[1] + " multiplier", r) for r in sel
+                  if r["case"].endswith("stationary") and r["refinement"] == ref]
+        for name, r in cands:
+            if r:
+                lines.append(["stationary", name, ref, r["dofs"], f"{f(r['velocity L2']):.3e}", f"{f(r['gradient L2']):.3e}",
+                              f"{f(r['pressure L2']):.3e}", f"{f(r['normal L2']):.3e}", "", f"{f(r['wall time']):.3g}"])
+    for ref in sorted({r["refinement"] for r in sel}, key=int):
+        cands = [("penalty β = " + r["penalty factor"], r) for r in rows if r["case"] == "killing" and r["refinement"] == ref]
+        cands += [(r["case"].split()[1] + " multiplier", r) for r in sel
+                  if r["case"].endswith("killing") and r["refinement"] == ref]
+        for name, r in cands:
+            lines.append(["Killing", name, ref, r["dofs"], f"{f(r['velocity L2']):.3e}", "", "", f"{f(r['normal L2']):.3e}",
+                          f"{f(r['energy change']):.3e}", f"{f(r['wall time']):.3g}"])
+    table(["problem", "tangentiality", "ref", "DoFs", "‖u−u_h‖", "‖∇_P(u−u_h)‖", "‖p−p_h‖", "‖u_h·ν‖",
+           "|F(1)−F(0)|/F(0)", "wall [s]"], lines)
+
 for l in ("2", "3"):
     print(f"**Decaying mode l = {l}** (Navier–Stokes, Re = 10, exact rate λ = {f([r for r in rows if r['case'].startswith('decay l=' + l)][0]['exact rate']):.4f})\n")
     lines = []
@@ -106,7 +134,8 @@ print("**Time-dependent solvers** (decaying mode l = 2, Re = 10, BDF2, τ = 0.05
 lines = []
 for r in rows:
     if r["case"].startswith("time solver"):
-        name = ("NS" if r["convection"] == "true" else "Stokes") + ", " + r["solver"] + (" (no reuse)" if "no reuse" in r["case"] else "")
+        name = (("NS" if r["convection"] == "true" else "Stokes") + ", " + r["solver"]
+                + (f" ({r['velocity AMG']})" if r.get("velocity AMG") else "") + (" (no reuse)" if "no reuse" in r["case"] else ""))
         lines.append([name, r["refinement"], r["dofs"], r["factorizations"], r["total iterations"], r["max iterations"],
                       f"{f(r['assemble time']):.3g}", f"{f(r['solve time']):.3g}", f"{f(r['wall time']):.3g}",
                       f"{f(r['velocity L2']):.3e}"])

@@ -1,7 +1,8 @@
 #!/bin/bash
 # Surface Stokes / Navier–Stokes on a fixed surface: convergence, dynamics and work–precision.
-# Usage (from the repository root): benchmarks/surface_stokes/run.sh [--quick] [--solvers]
-#   --solvers re-runs only the solver comparisons and keeps the accuracy rows of results.csv.
+# Usage (from the repository root): benchmarks/surface_stokes/run.sh [--quick] [--solvers] [--multiplier]
+#   --solvers re-runs only the solver comparisons and keeps the accuracy rows of results.csv;
+#   --multiplier re-runs only the Lagrange-multiplier tangentiality cases and keeps the other rows.
 #   BUILD_DIR (default: build) is a Release build directory of the project; the library is built
 #   there if missing, the driver in $BUILD_DIR/benchmark-surface-stokes.
 # Writes benchmarks/surface_stokes/results.csv and work_precision.png.

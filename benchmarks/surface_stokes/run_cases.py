@@ -1,12 +1,14 @@
 """Runs the surface Stokes benchmark cases through the driver; writes results.csv and the PNG.
-Called by run.sh: run_cases.py DRIVER OUTDIR [--quick] [--solvers].
---solvers re-runs only the solver comparisons (sections 2, 2b, 6) and keeps the other rows of the
-existing results.csv (convergence, penalty, Killing, decay: direct-solver accuracy studies)."""
+Called by run.sh: run_cases.py DRIVER OUTDIR [--quick] [--solvers] [--multiplier].
+--solvers re-runs only the solver comparisons (sections 2, 2a, 2b, 6) and keeps the other rows of the
+existing results.csv (convergence, penalty, Killing, decay: direct-solver accuracy studies).
+--multiplier re-runs only the tangentiality multiplier cases (section 4b) and keeps the other rows."""
 import csv, math, os, statistics, subprocess, sys, tempfile
 
 driver, outdir = sys.argv[1], sys.argv[2]
 quick = "--quick" in sys.argv[3:]
 solvers_only = "--solvers" in sys.argv[3:]
+multiplier_only = "--multiplier" in sys.argv[3:]
 repeats = 1 if quick else 3
 workdir = tempfile.mkdtemp(prefix="surface_stokes_")
 
@@ -31,7 +33,8 @@ def run(settings, repeat=repeats, threads=None):
 columns = ["case", "problem", "shape", "k", "refinement", "dofs", "solver", "scheme", "convection", "Re",
            "penalty factor", "tau", "velocity L2", "tangential L2", "gradient L2", "pressure L2", "normal L2",
            "energy change", "measured rate", "exact rate", "steps", "total iterations", "max iterations",
-           "factorizations", "assemble time", "solve time", "wall time", "threads", "aggregation threshold"]
+           "factorizations", "assemble time", "solve time", "wall time", "threads", "aggregation threshold",
+           "velocity AMG"]
 rows = []
 
 def record(case, settings, r):
@@ -42,9 +45,13 @@ def record(case, settings, r):
            "solver": s.get("flow/linear solver", "direct") + ("" if s.get("flow/linear solver", "direct") != "direct"
                                                              else " " + s.get("flow/direct solver", "Amesos_Klu")),
            "scheme": s.get("flow/time scheme", "BDF2"), "convection": s.get("flow/convection", "true"),
-           "Re": s.get("flow/Re", "1"), "penalty factor": s.get("flow/penalty factor", "10"),
+           "Re": s.get("flow/Re", "1"),
+           "penalty factor": "" if s.get("flow/tangentiality") == "multiplier" else s.get("flow/penalty factor", "10"),
            "tau": s.get("time stepping/time step", ""), "threads": s.get("threads", ""),
-           "aggregation threshold": s.get("flow/velocity AMG aggregation threshold", "")}
+           "aggregation threshold": s.get("flow/velocity AMG aggregation threshold", ""),
+           "velocity AMG": "" if s.get("flow/linear solver", "direct") == "direct" else
+                           s.get("flow/velocity AMG operator", "Q2") + ", " +
+                           ("node frames" if s.get("flow/velocity AMG node frames", "true") == "true" else "Cartesian")}
     for key, name in [("velocity", "velocity L2"), ("tangential", "tangential L2"), ("gradient", "gradient L2"),
                       ("pressure", "pressure L2"), ("normal", "normal L2")]:
         row[name] = r[key]
@@ -56,15 +63,19 @@ def record(case, settings, r):
                                        "energy change", "max iterations", "wall time")}, flush=True)
 
 max_ref = 3 if quick else 5
-solver_cases = ("stationary solver", "stationary solver theta", "threads", "time solver", "time solver no reuse")
-if solvers_only:
+# "stationary solver theta" (θ = 0.02, Cartesian AMG) is not rerun by --solvers: its rows are kept from the
+# session that compared the aggregation thresholds.
+solver_cases = ("stationary solver", "stationary solver amg", "threads", "time solver", "time solver no reuse")
+multiplier_cases = ("multiplier Q1 stationary", "multiplier Q2 stationary", "multiplier Q1 killing", "multiplier Q2 killing")
+if solvers_only or multiplier_only:
+    rerun = solver_cases if solvers_only else multiplier_cases
     with open(os.path.join(outdir, "results.csv")) as f:
-        rows = [dict(r) for r in csv.DictReader(f) if r["case"] not in solver_cases]
+        rows = [dict(r) for r in csv.DictReader(f) if r["case"] not in rerun]
         for r in rows:
             for c in columns:
                 r.setdefault(c, "")
 # 1. Manufactured stationary Stokes: convergence for k = 2, 3 on sphere and ellipsoid (direct solver).
-for shape in ("sphere", "ellipsoid") if not solvers_only else ():
+for shape in ("sphere", "ellipsoid") if not (solvers_only or multiplier_only) else ():
     for k in (2, 3):
         for ref in range(1, max_ref + 1):
             s = {"geometry/shape": shape, "geometry/refinement": ref, "geometry/position degree": k}
@@ -73,7 +84,7 @@ for shape in ("sphere", "ellipsoid") if not solvers_only else ():
             record("convergence", s, run(s))
 # 2. Solvers on the stationary problem (sphere, k = 2 and 3): KLU, MUMPS and the block preconditioner
 #    (default aggregation threshold 1e-4; k = 2 also with the former 0.02), all in one session.
-for k in (2, 3):
+for k in (2, 3) if not multiplier_only else ():
     for solver in (("direct", "Amesos_Klu"), ("direct", "Amesos_Mumps"), ("block preconditioned", None)):
         for ref in range(1, max_ref + 1):
             s = {"geometry/shape": "sphere", "geometry/refinement": ref, "geometry/position degree": k,
@@ -81,30 +92,53 @@ for k in (2, 3):
             if solver[1]:
                 s["flow/direct solver"] = solver[1]
             record("stationary solver", s, run(s))
-for ref in range(1, max_ref + 1):
+for ref in range(1, max_ref + 1) if not (solvers_only or multiplier_only) else ():
     s = {"geometry/shape": "sphere", "geometry/refinement": ref, "flow/linear solver": "block preconditioned",
-         "flow/velocity AMG aggregation threshold": 0.02}
+         "flow/velocity AMG aggregation threshold": 0.02, "flow/velocity AMG node frames": "false"}
     record("stationary solver theta", s, run(s, 1 if ref == 5 else repeats))
+# 2a. Velocity AMG variants of the block preconditioner (the default, Q2 in node frames, is in section 2):
+#     Q2 in Cartesian components (the former default), and the low-order-refined operator in node frames
+#     and in Cartesian components; k = 3 only the former default.
+for k, variants in ((2, (("Q2", "false"), ("low-order refined", "true"), ("low-order refined", "false"))),
+                    (3, (("Q2", "false"),))) if not multiplier_only else ():
+    for operator, frames in variants:
+        for ref in range(1, max_ref + 1):
+            s = {"geometry/shape": "sphere", "geometry/refinement": ref, "geometry/position degree": k,
+                 "flow/linear solver": "block preconditioned", "flow/velocity AMG operator": operator,
+                 "flow/velocity AMG node frames": frames}
+            record("stationary solver amg", s, run(s))
 # 2b. Threads in assembly (WorkStream): the same stationary problem with 1 and 2 threads.
-for threads in (1, 2):
+for threads in (1, 2) if not multiplier_only else ():
     s = {"geometry/shape": "sphere", "geometry/refinement": max_ref - 1}
     r = run(s, threads=threads)
     record("threads", {**s, "threads": threads}, r)
 # 3. Penalty choices (sphere, k = 2): exponent 2 vs 3, and the normal used.
-for ref in range(2, max_ref + 1) if not solvers_only else ():
+for ref in range(2, max_ref + 1) if not (solvers_only or multiplier_only) else ():
     for extra in ({"flow/penalty exponent": 2}, {"flow/penalty normal": "continuous"}, {"flow/penalty normal": "cell"},
                   {"flow/penalty factor": 1000}):
         s = {"geometry/shape": "sphere", "geometry/refinement": ref, **extra}
         r = run(s, 1)
         record("penalty " + ",".join(f"{k.split('/')[1]}={v}" for k, v in extra.items()), s, r)
 # 4. Killing field, t in [0, 1], Re = 10, penalty factor 1000 and 10.
-for beta in (1000, 10) if not solvers_only else ():
+for beta in (1000, 10) if not (solvers_only or multiplier_only) else ():
     for ref in range(2, (4 if quick else 5) + 1):
         s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface/problem": "killing",
              "flow/Re": 10, "flow/penalty factor": beta, "time stepping/time step": 0.05, "time stepping/end time": 1}
         record("killing", s, run(s, 1))
+# 4b. Tangentiality by a Lagrange multiplier λ ∈ Q1 or Q2 instead of the penalty (direct solver): stationary
+#     manufactured sphere (errors) and the Killing field (energy drift), k = 2.
+for d in (1, 2) if not solvers_only else ():
+    for ref in range(2, max_ref + 1):
+        s = {"geometry/shape": "sphere", "geometry/refinement": ref, "flow/tangentiality": "multiplier",
+             "flow/multiplier degree": d}
+        record(f"multiplier Q{d} stationary", s, run(s, 1))
+    for ref in range(2, (4 if quick else 5) + 1):
+        s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface/problem": "killing",
+             "flow/Re": 10, "flow/tangentiality": "multiplier", "flow/multiplier degree": d,
+             "time stepping/time step": 0.05, "time stepping/end time": 1}
+        record(f"multiplier Q{d} killing", s, run(s, 1))
 # 5. Decaying modes l = 2, 3 with convection, Re = 10: h-convergence at tau = 0.0125, tau-convergence at ref 4.
-for l in (2, 3) if not solvers_only else ():
+for l in (2, 3) if not (solvers_only or multiplier_only) else ():
     for ref in range(2, (3 if quick else 4) + 1):
         s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface/problem": "decaying mode",
              "fixed surface/mode number": l, "flow/Re": 10, "time stepping/time step": 0.0125,
@@ -117,9 +151,13 @@ for l in (2, 3) if not solvers_only else ():
                  "flow/time scheme": scheme, "time stepping/time step": tau, "time stepping/end time": 1}
             record(f"decay l={l} tau", s, run(s, 1))
 # 6. Time-dependent solvers (decaying mode l = 2, BDF2, tau = 0.05): direct with reuse, direct without, block.
-for ref in range(2, (3 if quick else 4) + 1):
-    for extra in ({}, {"flow/reuse factorization": "false"}, {"flow/linear solver": "block preconditioned"},
-                  {"flow/convection": "false"}, {"flow/convection": "false", "flow/linear solver": "block preconditioned"}):
+for ref in range(2, (3 if quick else 4) + 1) if not multiplier_only else ():
+    block = {"flow/linear solver": "block preconditioned"}
+    cartesian = {**block, "flow/velocity AMG node frames": "false"}
+    lor = {**block, "flow/velocity AMG operator": "low-order refined"}
+    stokes = {"flow/convection": "false"}
+    for extra in ({}, {"flow/reuse factorization": "false"}, block, cartesian, lor,
+                  stokes, {**stokes, **block}, {**stokes, **cartesian}, {**stokes, **lor}):
         s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface/problem": "decaying mode",
              "flow/Re": 10, "time stepping/time step": 0.05, "time stepping/end time": 1, **extra}
         tag = "time solver" + ("" if "flow/reuse factorization" not in extra else " no reuse")
@@ -144,9 +182,10 @@ for label, fn, style in [
         ("direct KLU, k=3", lambda r: r["case"] == "stationary solver" and "Klu" in r["solver"] and str(r["k"]) == "3", "s--"),
         ("direct MUMPS, k=2", lambda r: r["case"] == "stationary solver" and "Mumps" in r["solver"] and str(r["k"]) == "2", "^-"),
         ("direct MUMPS, k=3", lambda r: r["case"] == "stationary solver" and "Mumps" in r["solver"] and str(r["k"]) == "3", "v--"),
-        ("GMRES + block AMG, k=2", lambda r: r["case"] == "stationary solver" and r["solver"].startswith("block") and str(r["k"]) == "2", "d-"),
-        ("GMRES + block AMG, k=3", lambda r: r["case"] == "stationary solver" and r["solver"].startswith("block") and str(r["k"]) == "3", "D--"),
-        ("GMRES + block AMG, k=2, θ=0.02", lambda r: r["case"] == "stationary solver theta", "x:")]:
+        ("GMRES + block AMG (node frames), k=2", lambda r: r["case"] == "stationary solver" and r["solver"].startswith("block") and str(r["k"]) == "2", "d-"),
+        ("GMRES + block AMG (node frames), k=3", lambda r: r["case"] == "stationary solver" and r["solver"].startswith("block") and str(r["k"]) == "3", "D--"),
+        ("GMRES + block AMG (Cartesian), k=2", lambda r: r["case"] == "stationary solver amg" and r["velocity AMG"] == "Q2, Cartesian" and str(r["k"]) == "2", "x:"),
+        ("GMRES + LOR AMG (node frames), k=2", lambda r: r["case"] == "stationary solver amg" and r["velocity AMG"] == "low-order refined, node frames", "+:")]:
     x, y = series(fn)
     ax.loglog(list(x), list(y), style, label=label)
 ax.set_xlabel("wall time [s] (median of %d)" % repeats)
@@ -158,9 +197,9 @@ ax = axes[1]
 for label, fn, style in [
         ("NS, direct + reuse", lambda r: r["case"] == "time solver" and r["convection"] == "true" and r["solver"].startswith("direct"), "o-"),
         ("NS, direct, no reuse", lambda r: r["case"] == "time solver no reuse", "x--"),
-        ("NS, block AMG", lambda r: r["case"] == "time solver" and r["convection"] == "true" and r["solver"].startswith("block"), "d-"),
+        ("NS, block AMG (node frames)", lambda r: r["case"] == "time solver" and r["convection"] == "true" and r["velocity AMG"] == "Q2, node frames", "d-"),
         ("Stokes, direct", lambda r: r["case"] == "time solver" and r["convection"] == "false" and r["solver"].startswith("direct"), "s-"),
-        ("Stokes, block AMG", lambda r: r["case"] == "time solver" and r["convection"] == "false" and r["solver"].startswith("block"), "^-")]:
+        ("Stokes, block AMG (node frames)", lambda r: r["case"] == "time solver" and r["convection"] == "false" and r["velocity AMG"] == "Q2, node frames", "^-")]:
     pts = sorted((float(r["wall time"]), float(r["velocity L2"])) for r in rows if fn(r))
     if pts:
         x, y = zip(*pts)

@@ -20,6 +20,7 @@
 #include <fluid_surface/statistics_file.h>
 #include <fluid_surface/surface_geometry.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -52,7 +53,8 @@ namespace FluidSurface
    * σ(u) = ½(∇_P u + ∇_P uᵀ), ∇_P u = P ∇_C u, div_P u = tr ∇_C u. Tangentiality
    * u·ν = 0 is imposed by the penalty η = β h_K^{−q} with a normal n that can be
    * the exact normal of the analytic surface, the continuous normal ñ of the
-   * geometry, or the cell normal ν_h. Convection is the skew-symmetric form
+   * geometry, or the cell normal ν_h; or by a Lagrange multiplier λ ∈ Q_d,
+   * (λ, v·n) + (u·n, μ) (direct solver only). Convection is the skew-symmetric form
    * c(w; u, v) = ½[(∇_w u, v) − (∇_w v, u)] with w extrapolated from the old
    * steps (energy neutral: c(w; u, u) = 0). Time derivative: BDF1 or BDF2.
    * The mass and convection terms are assembled only when switched on.
@@ -66,7 +68,13 @@ namespace FluidSurface
       bdf1,
       bdf2
     };
-    /// The normal n of the tangentiality penalty η(u·n, v·n).
+    /// How u·n = 0 is imposed.
+    enum class Tangentiality
+    {
+      penalty,   ///< η(u·n, v·n), η = β h_K^{−q}
+      multiplier ///< a Lagrange multiplier λ ∈ Q1 or Q2: (λ, v·n) + (u·n, μ) (direct solver only)
+    };
+    /// The normal n of the tangentiality penalty η(u·n, v·n) (or of the multiplier constraint).
     enum class PenaltyNormal
     {
       exact,      ///< normal of the analytic surface (set_exact_normal)
@@ -78,6 +86,12 @@ namespace FluidSurface
     {
       direct,              ///< Amesos (KLU or MUMPS); with convection the old factorization preconditions GMRES
       block_preconditioned ///< GMRES + block-triangular preconditioner: AMG(A_uu), Schur ≈ Cahouet–Chabard
+    };
+    /// The matrix on which the velocity AMG of the block preconditioner is built.
+    enum class VelocityAMGOperator
+    {
+      q2,               ///< the Q2 velocity block A itself
+      low_order_refined ///< A assembled with Q1 on the 4 sub-cells of each cell (same DoFs as Q2)
     };
 
     /// Work done by one linear solve.
@@ -106,6 +120,8 @@ namespace FluidSurface
       bool          inertia              = true; ///< time derivative ∂_t u on/off
       bool          convection           = true; ///< convection ∇_w u on/off
       TimeScheme    scheme               = TimeScheme::bdf2;
+      Tangentiality tangentiality        = Tangentiality::penalty;
+      unsigned int  multiplier_degree    = 1; ///< polynomial degree of the multiplier λ ∈ Q_d
       PenaltyNormal penalty_normal       = PenaltyNormal::exact;
       double        penalty_factor       = 10.0; ///< β of η = β h^{−q}
       double        penalty_exponent     = 3.0;  ///< q of η = β h^{−q}
@@ -113,6 +129,8 @@ namespace FluidSurface
       std::string   direct_solver_name   = "Amesos_Klu";
       std::string   amg_smoother         = "symmetric block Gauss-Seidel"; ///< ML smoother of the velocity AMG
       double        amg_aggregation_threshold = 1e-4; ///< ML aggregation threshold of the velocity AMG
+      VelocityAMGOperator amg_operator = VelocityAMGOperator::q2; ///< matrix of the velocity AMG
+      bool          amg_node_frames      = true; ///< velocity AMG in node frames [t₁ t₂ n]
       bool          reuse_factorization  = true;
       unsigned int  max_reuse_iterations = 10;
       double        tolerance            = 1e-10; ///< relative residual of Krylov solves
@@ -193,7 +211,7 @@ namespace FluidSurface
     {
       return flow_dofs;
     }
-    /// (u, p), ghosted; components 0–2 velocity, 3 pressure.
+    /// (u, p), ghosted; components 0–2 velocity, 3 pressure (4: the tangentiality multiplier λ, if any).
     const VectorType &
     solution() const
     {
@@ -230,6 +248,13 @@ namespace FluidSurface
                    CopyData                                                      &copy) const;
     void
     copy_local_to_global(const CopyData &copy);
+    /// Quadrature of the low-order-refined operator: 2×2 Gauss points on each of the 4 sub-cells.
+    static dealii::Quadrature<2>
+    lor_quadrature();
+    /// The orthonormal frame [t₁ t₂ n] at a velocity node x (n exact if known, else ñ/|ñ|); the
+    /// identity at a @p cartesian (constrained) node and on meshes with hanging nodes.
+    dealii::Tensor<2, 3>
+    lor_frame(const dealii::Point<3> &x, const dealii::Tensor<1, 3> &smooth_normal, const bool cartesian) const;
     void
     remove_killing_components_from_rhs();
     /// The constraints fixing the Killing fields at one node per axis (direct solver).
@@ -254,6 +279,15 @@ namespace FluidSurface
     std::vector<dealii::Tensor<1, 3>>                                            killing;
 
     dealii::FESystem<2, 3>            fe;
+    /// [Q1 iso Q2]³ × Q1: piecewise bilinear on the 4 sub-cells, with the DoF layout of fe.
+    dealii::FESystem<2, 3>            lor_fe;
+    /// Per sub-cell of the low-order-refined operator: its 12 local velocity DoFs, its quadrature points.
+    std::vector<std::vector<unsigned int>> lor_subcell_dofs, lor_subcell_points;
+    std::vector<unsigned int>              lor_dof_node; ///< local velocity DoF → its node (0–8) in the cell
+    bool hanging_nodes = false; ///< the mesh has hanging nodes (node frames are then Cartesian)
+    /// Owned velocity nodes (the local indices of their x, y, z DoFs in the velocity block) and their
+    /// frames [t₁ t₂ n], for the velocity AMG in node frames.
+    std::vector<std::pair<std::array<dealii::types::global_dof_index, 3>, dealii::Tensor<2, 3>>> lor_nodes;
     dealii::DoFHandler<2, 3>          flow_dofs;
     dealii::types::global_dof_index   n_u = 0, n_p = 0;
     dealii::IndexSet                  owned, relevant;
@@ -263,6 +297,7 @@ namespace FluidSurface
     dealii::TrilinosWrappers::SparseMatrix      system_matrix;
     dealii::TrilinosWrappers::BlockSparseMatrix preconditioner_matrix; ///< A_uu without convection; M_p
     dealii::TrilinosWrappers::BlockSparseMatrix pressure_laplace;      ///< L_p (time-dependent runs)
+    dealii::TrilinosWrappers::SparseMatrix      lor_velocity_matrix;   ///< A_uu with Q1 on the sub-cells
     VectorType                                  system_rhs;
     VectorType                                  unconstrained_rhs; ///< F before constraints (stationary)
     std::vector<VectorType>                     killing_moments;   ///< m_a = (a × x, φ_i)
@@ -282,6 +317,7 @@ namespace FluidSurface
     std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG>     pressure_mass_amg;
     std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG>     pressure_laplace_amg;
     bool                                                           matrix_assembled = false;
+    bool preconditioner_outdated = true; ///< the next assembly must build the preconditioner matrices
   };
 
   /**
