@@ -537,7 +537,7 @@ namespace FluidSurface
     // With inertia the momenta are held on the new surface S^{m+1} (linearized), so that no lag of one
     // step's mesh motion has to be made up in the next step whatever its τ.
     const bool momenta_on_new_surface = rigid && flow.inertia;
-    // The damping target X^m + τR: the mesh moves along with the rigid part R of u^m.
+    // The damping target X^m + τR: the mesh moves along with the rigid motion R of the shape (fit of u^m·ν).
     const RigidMotion carried = redistribution.follow_rigid_motion && damping > 0 ? rigid_motion(current) : RigidMotion();
 
     const FEValuesExtractors::Vector velocity(velocity_component), position(position_component), vec(0);
