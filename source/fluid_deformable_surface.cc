@@ -513,7 +513,7 @@ namespace FluidSurface
   } // namespace
 
   void
-  FluidDeformableSurface::assemble(const double tau)
+  FluidDeformableSurface::assemble(const double tau, const RigidMotion &motion)
   {
     system_matrix = 0;
     system_rhs    = 0;
@@ -538,7 +538,7 @@ namespace FluidSurface
     // step's mesh motion has to be made up in the next step whatever its τ.
     const bool momenta_on_new_surface = rigid && flow.inertia;
     // The damping target X^m + τR: the mesh moves along with the rigid motion R of the shape (fit of u^m·ν).
-    const RigidMotion carried = redistribution.follow_rigid_motion && damping > 0 ? rigid_motion(current) : RigidMotion();
+    const RigidMotion carried = redistribution.follow_rigid_motion && damping > 0 ? motion : RigidMotion();
 
     const FEValuesExtractors::Vector velocity(velocity_component), position(position_component), vec(0);
     const FEValuesExtractors::Scalar pressure(pressure_component), curvature(curvature_component),
@@ -894,9 +894,14 @@ namespace FluidSurface
   FluidDeformableSurface::advance(const double tau)
   {
     StepResult result;
+    // The momenta of u^m and the rigid motion of the shape, once per step (the mesh damping target and the
+    // constant parts of the momentum constraints).
+    const bool        need_motion = (redistribution.follow_rigid_motion && redistribution.relaxation_time > 0) ||
+                             (rigid_constraints() && flow.inertia);
+    const RigidMotion motion      = need_motion ? rigid_motion(current) : RigidMotion();
     {
       TimerSection section(step_timer, "assembly");
-      assemble(tau);
+      assemble(tau, motion);
     }
 
     // Bordering: the global constraints c_k·x = g_k with multipliers μ_k (force μ_k c_k in the
@@ -917,7 +922,7 @@ namespace FluidSurface
         // A drift P^m − P₀ (from the linearization) is returned by the fraction τ/τ_c per step, like the area
         // and volume drifts, so that a retry with a smaller τ asks for a smaller change of u.
         const std::array<double, 6> old_momenta =
-          flow.inertia ? rigid_motion(current).momenta : std::array<double, 6>{{0, 0, 0, 0, 0, 0}};
+          flow.inertia ? motion.momenta : std::array<double, 6>{{0, 0, 0, 0, 0, 0}};
         const double fraction = flow.inertia ? std::min(1.0, tau / drift_time(tau)) : 1.0;
         for (unsigned int k = 0; k < rigid_columns.size(); ++k)
           {

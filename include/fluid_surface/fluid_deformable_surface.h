@@ -281,7 +281,7 @@ namespace FluidSurface
     void
     set_initial_velocity();
     void
-    assemble(const double tau);
+    assemble(const double tau, const RigidMotion &motion);
     /// Y of @p flow_solution → the geometry's position field.
     void
     copy_new_position_to_geometry(const VectorType &flow_solution);
