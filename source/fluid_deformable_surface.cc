@@ -11,10 +11,10 @@
 #include <deal.II/numerics/data_postprocessor.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <fluid_surface/bordered_system.h>
 #include <fluid_surface/checkpoint.h>
 #include <fluid_surface/fluid_deformable_surface.h>
 #include <fluid_surface/output_writer.h>
-#include <fluid_surface/factorization_preconditioner.h>
 #include <fluid_surface/parameter_file.h>
 #include <fluid_surface/surface_operators.h>
 
@@ -788,21 +788,27 @@ namespace FluidSurface
   }
 
   unsigned int
-  FluidDeformableSurface::solve_system(VectorType &x, const VectorType &b)
+  FluidDeformableSurface::solve_system(const BorderedSystem        &system,
+                                       BorderedSystem::BlockVector &x,
+                                       const BorderedSystem::BlockVector &b)
   {
-    TimerSection section(step_timer, "linear solve");
+    TimerSection                              section(step_timer, "linear solve");
+    const BorderedFactorizationPreconditioner preconditioner(*factorization, system);
+    unsigned int                              iterations = 0;
     if (factorization_current)
+      preconditioner.vmult(x, b);
+    else
       {
-        factorization->solve(x, b);
-        return 0;
+        // Right preconditioning: GMRES measures the true residual ‖b − Kx‖.
+        SolverControl control(linear_solver.refactorization_threshold, linear_solver.tolerance * b.l2_norm());
+        SolverGMRES<BorderedSystem::BlockVector>::AdditionalData data(linear_solver.refactorization_threshold + 2,
+                                                                      true);
+        SolverGMRES<BorderedSystem::BlockVector> gmres(control, data);
+        gmres.solve(system, x, b, preconditioner);
+        iterations = control.last_step();
       }
-    // Right preconditioning: GMRES measures the true residual ‖b − Ax‖.
-    SolverControl                           control(linear_solver.refactorization_threshold,
-                                  linear_solver.tolerance * b.l2_norm());
-    SolverGMRES<VectorType>::AdditionalData data(linear_solver.refactorization_threshold + 2, true);
-    SolverGMRES<VectorType>                 gmres(control, data);
-    gmres.solve(system_matrix, x, b, FactorizationPreconditioner(*factorization));
-    return control.last_step();
+    preconditioner.enforce_constraints(x, BorderedSystem::multipliers(b));
+    return iterations;
   }
 
   Tensor<1, 3>
@@ -906,7 +912,7 @@ namespace FluidSurface
 
     // Bordering: the global constraints c_k·x = g_k with multipliers μ_k (force μ_k c_k in the
     // momentum rows): the volume row (u·ñ, 1) = −(V^m − V₀)/τ_c (μ = γ) and, in the Stokes limit,
-    // ∫u = 0, ∫x × u = 0. With x_b = A⁻¹b and x_k = A⁻¹c_k: Σ_k (c_j·x_k) μ_k = c_j·x_b − g_j.
+    // ∫u = 0, ∫x × u = 0; one solve of the bordered system per step (BorderedSystem).
     std::vector<const VectorType *> columns, rows;
     std::vector<double>             rates;
     if (volume_constraint.enabled)
@@ -933,58 +939,39 @@ namespace FluidSurface
           }
       }
 
-    const MPI_Comm          comm = geometry.get_communicator();
-    VectorType              x1(owned, comm);
-    std::vector<VectorType> xk(columns.size(), VectorType(owned, comm));
+    const BorderedSystem system(system_matrix, columns, rows);
+    BorderedSystem::BlockVector solution = system.make_vector(system_rhs), rhs = solution;
+    rhs.block(0) = system_rhs;
+    BorderedSystem::set_multipliers(rhs, rates);
     try
       {
         factorization_current = false;
         if (!factorization || !linear_solver.reuse_factorization || refactorize_next)
           factorize();
-        // An old factorization preconditions GMRES; when GMRES needs more than the threshold,
-        // this step's matrix is factorized and the solve repeated directly.
-        last_solves.resize(columns.size() + 1, VectorType(owned, comm));
-        auto solve = [&](VectorType &x, const VectorType &b, VectorType &last) {
-          try
-            {
-              x = last;
-              result.linear_iterations += solve_system(x, b);
-            }
-          catch (const SolverControl::NoConvergence &)
-            {
-              result.linear_iterations += linear_solver.refactorization_threshold;
-              factorize();
-              solve_system(x, b);
-            }
-          last = x;
-        };
-        solve(x1, system_rhs, last_solves[0]);
-        for (unsigned int k = 0; k < columns.size(); ++k)
-          solve(xk[k], *columns[k], last_solves[k + 1]);
-        result.factorized = factorization_current;
-        if (!columns.empty())
+        if (last_solution.n_blocks() == 2 && last_solution.block(1).size() == columns.size())
+          solution = last_solution;
+        // An old factorization preconditions GMRES on the bordered system; when GMRES needs more than the
+        // threshold, this step's matrix is factorized and the system solved directly.
+        try
           {
-            const unsigned int nc = columns.size();
-            FullMatrix<double> schur(nc, nc);
-            Vector<double>     residual(nc), mu(nc);
-            for (unsigned int j = 0; j < nc; ++j)
-              {
-                residual(j) = (*rows[j]) * x1 - rates[j];
-                for (unsigned int k = 0; k < nc; ++k)
-                  schur(j, k) = (*rows[j]) * xk[k];
-              }
-            schur.gauss_jordan();
-            schur.vmult(mu, residual);
-            for (unsigned int k = 0; k < nc; ++k)
-              x1.add(-mu(k), xk[k]);
-            const unsigned int first_rigid = volume_constraint.enabled ? 1 : 0;
-            if (volume_constraint.enabled)
-              result.gamma = mu(0);
-            double rigid = 0;
-            for (unsigned int k = first_rigid; k < nc; ++k)
-              rigid += mu(k) * mu(k);
-            result.rigid_force = std::sqrt(rigid);
+            result.linear_iterations += solve_system(system, solution, rhs);
           }
+        catch (const SolverControl::NoConvergence &)
+          {
+            result.linear_iterations += linear_solver.refactorization_threshold;
+            factorize();
+            solve_system(system, solution, rhs);
+          }
+        last_solution = solution;
+        result.factorized = factorization_current;
+        const std::vector<double> mu          = BorderedSystem::multipliers(solution);
+        const unsigned int        first_rigid = volume_constraint.enabled ? 1 : 0;
+        if (volume_constraint.enabled)
+          result.gamma = mu[0];
+        double rigid = 0;
+        for (unsigned int k = first_rigid; k < mu.size(); ++k)
+          rigid += mu[k] * mu[k];
+        result.rigid_force = std::sqrt(rigid);
       }
     catch (const std::exception &exc)
       {
@@ -992,6 +979,7 @@ namespace FluidSurface
         result.failure   = std::string("linear solver failed: ") + exc.what();
         return result;
       }
+    VectorType &x1 = solution.block(0);
     if (!std::isfinite(x1.l2_norm()))
       {
         result.failure = "the solution is not finite";

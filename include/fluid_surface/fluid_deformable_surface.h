@@ -12,6 +12,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <fluid_surface/bordered_system.h>
 #include <fluid_surface/surface_geometry.h>
 
 #include <array>
@@ -295,12 +296,13 @@ namespace FluidSurface
     void
     factorize();
     /**
-     * Solves A x = b with the current factorization: directly if it is of this
-     * step's matrix, otherwise by preconditioned GMRES from the initial guess x. Returns the GMRES
-     * iterations; throws SolverControl::NoConvergence when GMRES fails.
+     * Solves the bordered system K x = b (the step's matrix with its global constraints) with the current
+     * factorization: directly if it is of this step's matrix, otherwise by GMRES from the initial guess x,
+     * preconditioned by the bordered factorization; then makes the constraints hold to round-off. Returns
+     * the GMRES iterations; throws SolverControl::NoConvergence when GMRES fails.
      */
     unsigned int
-    solve_system(VectorType &x, const VectorType &b);
+    solve_system(const BorderedSystem &system, BorderedSystem::BlockVector &x, const BorderedSystem::BlockVector &b);
 
     SurfaceGeometry &geometry;
 
@@ -364,8 +366,8 @@ namespace FluidSurface
     {
       return !flow.inertia || flow.conserve_momenta;
     }
-    /// A⁻¹b and A⁻¹c_k of the last step: the initial guesses of the GMRES solves.
-    std::vector<VectorType>                         last_solves;
+    /// The state and multipliers of the last step: the initial guess of the GMRES solve.
+    BorderedSystem::BlockVector                     last_solution;
     /// The relaxation time τ_c = max(τ_drift, τ_max) of the drift corrections (≥ τ, independent of τ).
     double
     drift_time(const double tau) const
