@@ -204,6 +204,9 @@ namespace FluidSurface
     double       previous_rate  = 0;
     double       tau_before_rejections = 0;
     unsigned int n_energy_rises = 0;
+    // Accepted steps on which F rose at all (within the tolerance), and their largest relative rate rise/(τ|F|).
+    unsigned int n_rising_steps = 0;
+    double       max_rise_rate  = 0;
     double       willmore       = 0;
     if (resuming)
       {
@@ -223,6 +226,8 @@ namespace FluidSurface
         previous_rate            = data.get_double("simulation/previous rate");
         tau_before_rejections    = data.get_double("simulation/tau before rejections");
         n_energy_rises           = data.get_unsigned("simulation/energy rises");
+        n_rising_steps           = data.get_unsigned("simulation/rising steps");
+        max_rise_rate            = data.get_double("simulation/max rise rate");
         wall_time_before_restart = data.get_double("simulation/wall time");
         willmore                 = geometry.compute_curvature();
         // The restored fields must reproduce the energy recorded with them (to rounding: the rank count may differ).
@@ -265,6 +270,8 @@ namespace FluidSurface
       data.set("simulation/previous rate", previous_rate);
       data.set("simulation/tau before rejections", tau_before_rejections);
       data.set("simulation/energy rises", n_energy_rises);
+      data.set("simulation/rising steps", n_rising_steps);
+      data.set("simulation/max rise rate", max_rise_rate);
       data.set("simulation/wall time", elapsed_wall_time());
       model.save(data);
       time.save(data);
@@ -334,6 +341,11 @@ namespace FluidSurface
           // a steady rise rate just below the tolerance shrinks τ towards τ_min, one rejection at a time).
           time.set_step_size(tau_before_rejections);
         previous_rate = 0;
+        if (rise > 1e-11 * std::abs(total_energy)) // above the rounding of F
+          {
+            ++n_rising_steps;
+            max_rise_rate = std::max(max_rise_rate, rise / (tau * std::abs(total_energy)));
+          }
         model.accept();
         time.accept(tau);
         willmore = new_willmore;
@@ -395,6 +407,8 @@ namespace FluidSurface
           diagnostics.write_summary(summary, total_energy, time.step_number(), time.n_rejected_steps(),
                                     elapsed_wall_time());
           summary << "energy rises accepted: " << n_energy_rises << '\n';
+          summary << "steps with rising energy: " << n_rising_steps << '\n';
+          summary << "max relative energy rise rate: " << std::setprecision(3) << max_rise_rate << '\n';
           summary << "LU factorizations: " << model.n_factorizations() << '\n';
         }
         std::filesystem::rename(output.directory() + "summary.tmp", output.directory() + "summary");
@@ -402,6 +416,8 @@ namespace FluidSurface
         diagnostics.write_summary(text, total_energy, time.step_number(), time.n_rejected_steps(),
                                   elapsed_wall_time());
         text << "energy rises accepted: " << n_energy_rises << '\n';
+        text << "steps with rising energy: " << n_rising_steps << '\n';
+        text << "max relative energy rise rate: " << std::setprecision(3) << max_rise_rate << '\n';
         text << "LU factorizations: " << model.n_factorizations() << '\n';
         std::istringstream lines(text.str());
         std::cout << "--- summary\n";

@@ -2,11 +2,13 @@
 # Stability stress tests of scene full. Run from the repository root after building:
 #   benchmarks/stability/run.sh [--quick] [PART ...]     PART = fixed | perturbed | elongated (default: all)
 # fixed:     the rotating prolate (prm/prolate.prm) with a fixed τ (adaptive = false: a step whose energy rise
-#            exceeds the tolerance stops the run) to t = 1, refinements 2 and 3, τ = 0.1 … 0.0125.
+#            exceeds the tolerance stops the run) to t = 1, refinements FIXED_REFINEMENTS (default "2 3 4"),
+#            τ = 0.1 … 0.0125.
 # perturbed: the rotating oblate (prm/oblate.prm), refinement PERTURBED_REFINEMENT (3), adaptive τ, towards t = 50
 #            with seeded shape or velocity noise (PERTURBED_CASES, default "shape:0.01 shape:0.05 velocity:0.1
 #            velocity:0.5"); each run is cut after LIMIT s of wall time (default 600).
-# elongated: a 1:5 spheroid [0.4, 0.4, 2] (refinement 2 and 3) released from rest and spun at ω0 = 2, adaptive τ, to t = 5.
+# elongated: a 1:5 spheroid [0.4, 0.4, 2] (refinements ELONGATED_REFINEMENTS, default "3 4") released from rest and
+#            spun at ω0 = 2, adaptive τ, to t = 5.
 # Each case writes a row to benchmarks/stability/cases/<name>.csv and keeps its statistics; results.csv and
 # stability.png are rebuilt from all cases. --quick: one short case per part.
 set -u
@@ -61,7 +63,7 @@ PY
 for part in $parts; do
   case $part in
   fixed)
-    refs="2 3"; taus="0.1 0.05 0.025 0.0125"; end=1
+    refs=${FIXED_REFINEMENTS:-"2 3 4"}; taus="0.1 0.05 0.025 0.0125"; end=1
     [ $quick = 1 ] && { refs="2"; taus="0.05"; end=0.2; }
     for r in $refs; do for t in $taus; do
       run fixed_r${r}_tau$t prm/prolate.prm "subsection geometry
@@ -93,7 +95,7 @@ subsection diagnostics
 end"
     done ;;
   elongated)
-    refs="2 3"; end=5; [ $quick = 1 ] && { refs="2"; end=0.1; }
+    refs=${ELONGATED_REFINEMENTS:-"3 4"}; end=5; [ $quick = 1 ] && { refs="2"; end=0.1; }
     for r in $refs; do for w in 0 2; do
       run elongated_r${r}_omega$w prm/prolate.prm "subsection geometry
   set semi-axes = 0.4, 0.4, 2
