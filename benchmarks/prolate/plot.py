@@ -42,7 +42,7 @@ for r in done:
     ax[1].loglog(wall, e_energy, "s", c="C1", label="|F(10) − F_eq| / F_eq" if r is done[0] else None)
     ax[1].annotate(name, (wall, e_omega), fontsize=8)
 ax[1].set_title("completed cases: error to the rotating equilibrium at L0", fontsize=9)
-ax[1].set_xlabel("wall time to t = 10 [s] (2 cores shared with 3–5 other jobs)"); ax[1].set_ylabel("relative error")
+ax[1].set_xlabel("wall time to t = 10 [s] (2 cores, one other run beside)"); ax[1].set_ylabel("relative error")
 if done:
     ax[1].legend(fontsize=8)
 fig.tight_layout(); fig.savefig(here + "/prolate.png", dpi=110)
