@@ -402,16 +402,6 @@ namespace FluidSurface
     diagnostics.compare_with_mean_rotation(geometry);
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
-        {
-          std::ofstream summary(output.directory() + "summary.tmp");
-          diagnostics.write_summary(summary, total_energy, time.step_number(), time.n_rejected_steps(),
-                                    elapsed_wall_time());
-          summary << "energy rises accepted: " << n_energy_rises << '\n';
-          summary << "steps with rising energy: " << n_rising_steps << '\n';
-          summary << "max relative energy rise rate: " << std::setprecision(3) << max_rise_rate << '\n';
-          summary << "LU factorizations: " << model.n_factorizations() << '\n';
-        }
-        std::filesystem::rename(output.directory() + "summary.tmp", output.directory() + "summary");
         std::ostringstream text;
         diagnostics.write_summary(text, total_energy, time.step_number(), time.n_rejected_steps(),
                                   elapsed_wall_time());
@@ -419,6 +409,11 @@ namespace FluidSurface
         text << "steps with rising energy: " << n_rising_steps << '\n';
         text << "max relative energy rise rate: " << std::setprecision(3) << max_rise_rate << '\n';
         text << "LU factorizations: " << model.n_factorizations() << '\n';
+        {
+          std::ofstream summary(output.directory() + "summary.tmp");
+          summary << text.str();
+        }
+        std::filesystem::rename(output.directory() + "summary.tmp", output.directory() + "summary");
         std::istringstream lines(text.str());
         std::cout << "--- summary\n";
         for (std::string line; std::getline(lines, line);)
