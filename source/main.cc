@@ -1,9 +1,9 @@
 // fluid_surface: fluid deformable surfaces (surface Navier–Stokes + Helfrich bending) with deal.II.
 #include <deal.II/base/mpi.h>
 
-#include <fluid_surface/axisymmetric_equilibrium.h>
-#include <fluid_surface/parameter_file.h>
-#include <fluid_surface/simulation.h>
+#include <fluid_surface/reference/axisymmetric_equilibrium.h>
+#include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/scenes/simulation.h>
 
 #include <iostream>
 #include <sstream>

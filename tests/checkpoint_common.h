@@ -5,9 +5,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <fluid_surface/checkpoint.h>
-#include <fluid_surface/parameter_file.h>
-#include <fluid_surface/simulation.h>
+#include <fluid_surface/io/checkpoint.h>
+#include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/scenes/simulation.h>
 
 #include <cstdio>
 #include <fstream>

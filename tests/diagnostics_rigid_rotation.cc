@@ -4,10 +4,10 @@
 // elongation axis z. Errors at refinements 2 and 3 (Q2 geometry).
 #include <deal.II/base/mpi.h>
 
-#include <fluid_surface/diagnostics.h>
-#include <fluid_surface/exact_geometry.h>
-#include <fluid_surface/fluid_deformable_surface.h>
-#include <fluid_surface/simulation.h>
+#include <fluid_surface/postprocess/diagnostics.h>
+#include <fluid_surface/geometry/exact_geometry.h>
+#include <fluid_surface/model/fluid_deformable_surface.h>
+#include <fluid_surface/scenes/simulation.h>
 
 #include <cmath>
 #include <cstdio>

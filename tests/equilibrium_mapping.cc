@@ -4,7 +4,7 @@
 // area() and volume() (V = ⅓∫X·ν); the polar representation meridian_radius(α) gives the volume
 // (2π/3)∫ρ³ sin α dα, agrees with |X| along the x–z meridian, is mirror symmetric, and yields the
 // equatorial radius and polar half height.
-#include <fluid_surface/axisymmetric_equilibrium.h>
+#include <fluid_surface/reference/axisymmetric_equilibrium.h>
 
 #include <cmath>
 #include <cstdio>

@@ -2,7 +2,7 @@
 // the sphere both branches obey ½∫H² − 8π ≈ 16π(1 − v) (l = 2 mode) with p0 → 6/R², γ → 2p0/R; and along a
 // family of rotating equilibria dF_bend/dI_zz = ½ω² (first variation at fixed A and V), checked by central
 // differences in ω² near the sphere.
-#include <fluid_surface/axisymmetric_equilibrium.h>
+#include <fluid_surface/reference/axisymmetric_equilibrium.h>
 
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,6 @@
 // Rotating axisymmetric equilibria at A = 4π, Be = 1, reduced volume 0.75 (design §5 table): bending energy
 // ½∫H², I_zz = ∫(x²+y²), the multipliers p0, γ, and the same shapes reached by prescribing L = ω I_zz.
-#include <fluid_surface/axisymmetric_equilibrium.h>
+#include <fluid_surface/reference/axisymmetric_equilibrium.h>
 
 #include <cmath>
 #include <cstdio>

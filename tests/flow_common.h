@@ -5,11 +5,11 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <fluid_surface/output_writer.h>
-#include <fluid_surface/simulation.h>
-#include <fluid_surface/statistics_file.h>
-#include <fluid_surface/surface_flow.h>
-#include <fluid_surface/surface_geometry.h>
+#include <fluid_surface/io/output_writer.h>
+#include <fluid_surface/scenes/simulation.h>
+#include <fluid_surface/io/statistics_file.h>
+#include <fluid_surface/scenes/fixed_surface_scene.h>
+#include <fluid_surface/geometry/surface_geometry.h>
 
 #include <cmath>
 #include <cstdio>

@@ -6,7 +6,7 @@
 // block preconditioner is rejected with an InputError.
 #include "flow_common.h"
 
-#include <fluid_surface/parameter_file.h>
+#include <fluid_surface/io/parameter_file.h>
 
 #include <string>
 #include <utility>

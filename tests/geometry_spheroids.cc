@@ -3,8 +3,8 @@
 // from the weak curvature (expected ~h^4), against exact values, with observed rates.
 #include <deal.II/base/mpi.h>
 
-#include <fluid_surface/exact_geometry.h>
-#include <fluid_surface/surface_geometry.h>
+#include <fluid_surface/geometry/exact_geometry.h>
+#include <fluid_surface/geometry/surface_geometry.h>
 
 #include <cmath>
 #include <cstdio>

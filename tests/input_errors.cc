@@ -4,8 +4,8 @@
 // output directory that holds another run.
 #include <deal.II/base/mpi.h>
 
-#include <fluid_surface/parameter_file.h>
-#include <fluid_surface/simulation.h>
+#include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/scenes/simulation.h>
 
 #include <filesystem>
 #include <fstream>

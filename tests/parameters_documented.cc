@@ -3,8 +3,8 @@
 //   ./build/fluid_surface --print-parameters > doc/parameters.prm
 #include <deal.II/base/mpi.h>
 
-#include <fluid_surface/parameter_file.h>
-#include <fluid_surface/simulation.h>
+#include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/scenes/simulation.h>
 
 #include <fstream>
 #include <iostream>

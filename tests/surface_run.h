@@ -4,9 +4,9 @@
 #ifndef fluid_surface_tests_surface_run_h
 #define fluid_surface_tests_surface_run_h
 
-#include <fluid_surface/diagnostics.h>
-#include <fluid_surface/fluid_deformable_surface.h>
-#include <fluid_surface/simulation.h>
+#include <fluid_surface/postprocess/diagnostics.h>
+#include <fluid_surface/model/fluid_deformable_surface.h>
+#include <fluid_surface/scenes/simulation.h>
 
 #include <string>
 

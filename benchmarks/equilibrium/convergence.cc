@@ -4,7 +4,7 @@
 // ω0 = 4: same area, reduced volume and angular momentum L0 = 4 I_zz(spheroid)).
 //
 // Usage: convergence [--quick] RESULTS.csv   (summary on stdout)
-#include <fluid_surface/axisymmetric_equilibrium.h>
+#include <fluid_surface/reference/axisymmetric_equilibrium.h>
 
 #include <algorithm>
 #include <chrono>

@@ -11,8 +11,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <fluid_surface/exact_geometry.h>
-#include <fluid_surface/surface_geometry.h>
+#include <fluid_surface/geometry/exact_geometry.h>
+#include <fluid_surface/geometry/surface_geometry.h>
 
 #include <algorithm>
 #include <chrono>

@@ -1,0 +1,325 @@
+#ifndef fluid_surface_flow_surface_flow_h
+#define fluid_surface_flow_surface_flow_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <fluid_surface/io/output_writer.h>
+#include <fluid_surface/io/statistics_file.h>
+#include <fluid_surface/geometry/surface_geometry.h>
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace FluidSurface
+{
+  /**
+   * A flow given by formulas in R³ (an exact solution or a prescribed field),
+   * evaluated at points of the discrete surface.
+   */
+  struct FlowField
+  {
+    /// u(x, t), full 3D vector.
+    std::function<dealii::Tensor<1, 3>(const dealii::Point<3> &, const double)> velocity;
+    /// Ambient Jacobian (∇u^e)_{ij} = ∂u_i/∂x_j of the extension of u used by the formulas.
+    std::function<dealii::Tensor<2, 3>(const dealii::Point<3> &, const double)> velocity_gradient;
+    /// p(x, t); compared modulo its mean.
+    std::function<double(const dealii::Point<3> &, const double)> pressure;
+  };
+
+  /**
+   * Surface Navier–Stokes on a frozen surface S_h with Günther derivatives,
+   * Taylor–Hood u ∈ [Q2]³ (full 3D vector), p ∈ Q1:
+   *
+   *   (α₀/τ)(u, v) + c(w; u, v) + (2/Re)(σ(u), σ(v)) − (p, div_P v) − (div_P u, q)
+   *     + η (u·n, v·n) = (f, v) + (1/τ)(Σ_k β_k u^{m−k}, v),
+   *
+   * σ(u) = ½(∇_P u + ∇_P uᵀ), ∇_P u = P ∇_C u, div_P u = tr ∇_C u. Tangentiality
+   * u·ν = 0 is imposed by the penalty η = β h_K^{−q} with a normal n that can be
+   * the exact normal of the analytic surface, the continuous normal ñ of the
+   * geometry, or the cell normal ν_h; or by a Lagrange multiplier λ ∈ Q_d,
+   * (λ, v·n) + (u·n, μ) (direct solver only). Convection is the skew-symmetric form
+   * c(w; u, v) = ½[(∇_w u, v) − (∇_w v, u)] with w extrapolated from the old
+   * steps (energy neutral: c(w; u, u) = 0). Time derivative: BDF1 or BDF2.
+   * The mass and convection terms are assembled only when switched on.
+   */
+  class SurfaceFlow
+  {
+  public:
+    /// Backward differentiation formula of the time derivative.
+    enum class TimeScheme
+    {
+      bdf1,
+      bdf2
+    };
+    /// How u·n = 0 is imposed.
+    enum class Tangentiality
+    {
+      penalty,   ///< η(u·n, v·n), η = β h_K^{−q}
+      multiplier ///< a Lagrange multiplier λ ∈ Q1 or Q2: (λ, v·n) + (u·n, μ) (direct solver only)
+    };
+    /// The normal n of the tangentiality penalty η(u·n, v·n) (or of the multiplier constraint).
+    enum class PenaltyNormal
+    {
+      exact,      ///< normal of the analytic surface (set_exact_normal)
+      continuous, ///< ñ ∈ [Q_k]³ of SurfaceGeometry::normal_field()
+      cell        ///< ν_h of the mapped cell
+    };
+    /// Linear solver of the saddle-point system.
+    enum class LinearSolver
+    {
+      direct,              ///< Amesos (KLU or MUMPS); with convection the old factorization preconditions GMRES
+      block_preconditioned ///< GMRES + block-triangular preconditioner: AMG(A_uu), Schur ≈ Cahouet–Chabard
+    };
+    /// The matrix on which the velocity AMG of the block preconditioner is built.
+    enum class VelocityAMGOperator
+    {
+      q2,               ///< the Q2 velocity block A itself
+      low_order_refined ///< A assembled with Q1 on the 4 sub-cells of each cell (same DoFs as Q2)
+    };
+
+    /// Work done by one linear solve.
+    struct SolveInfo
+    {
+      unsigned int iterations   = 0;     ///< Krylov iterations (0 for a plain direct solve)
+      bool         factorized   = false; ///< a new factorization (or AMG hierarchy) was built
+      double       assemble_time = 0;    ///< wall seconds of assembly
+      double       solve_time    = 0;    ///< wall seconds of the solver, setup included
+    };
+
+    /// Errors against an exact flow (Killing components and pressure means removed first).
+    struct Errors
+    {
+      double velocity          = 0; ///< ‖u − u_h‖_L2
+      double tangential        = 0; ///< ‖P(u − u_h)‖_L2
+      double gradient          = 0; ///< ‖∇_P u − ∇_P u_h‖_L2
+      double pressure          = 0; ///< ‖(p − p̄) − (p_h − p̄_h)‖_L2
+      double normal_velocity   = 0; ///< ‖u_h·n‖_L2
+    };
+
+    /// The entries of `subsection flow`.
+    struct Parameters
+    {
+      double        Re                   = 1.0;  ///< Reynolds number Re
+      bool          inertia              = true; ///< time derivative ∂_t u on/off
+      bool          convection           = true; ///< convection ∇_w u on/off
+      TimeScheme    scheme               = TimeScheme::bdf2;
+      Tangentiality tangentiality        = Tangentiality::penalty;
+      unsigned int  multiplier_degree    = 1; ///< polynomial degree of the multiplier λ ∈ Q_d
+      PenaltyNormal penalty_normal       = PenaltyNormal::exact;
+      double        penalty_factor       = 10.0; ///< β of η = β h^{−q}
+      double        penalty_exponent     = 3.0;  ///< q of η = β h^{−q}
+      LinearSolver  solver               = LinearSolver::direct;
+      std::string   direct_solver_name   = "Amesos_Klu";
+      std::string   amg_smoother         = "symmetric block Gauss-Seidel"; ///< ML smoother of the velocity AMG
+      double        amg_aggregation_threshold = 1e-4; ///< ML aggregation threshold of the velocity AMG
+      VelocityAMGOperator amg_operator = VelocityAMGOperator::q2; ///< matrix of the velocity AMG
+      bool          amg_node_frames      = true; ///< velocity AMG in node frames [t₁ t₂ n]
+      bool          reuse_factorization  = true;
+      unsigned int  max_reuse_iterations = 10;
+      double        tolerance            = 1e-10; ///< relative residual of Krylov solves
+      unsigned int  max_iterations       = 1000;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm);
+    };
+
+    /// A flow on @p geometry with default parameters (parse_parameters() may follow).
+    explicit SurfaceFlow(const SurfaceGeometry &geometry);
+    /// A flow on @p geometry with parsed @p parameters.
+    SurfaceFlow(const SurfaceGeometry &geometry, const Parameters &parameters);
+
+    /// Declares `subsection flow`.
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    /// Reads `subsection flow`.
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+    const Parameters &
+    get_parameters() const
+    {
+      return parameters;
+    }
+
+    /// Switches the time derivative and the convection term (a scene decides; Stokes: both off).
+    void
+    set_terms(const bool time_derivative, const bool convection);
+
+    /// The normal of the analytic surface, for PenaltyNormal::exact and for the error norms.
+    void
+    set_exact_normal(const std::function<dealii::Tensor<1, 3>(const dealii::Point<3> &)> &normal);
+
+    /// Body force f(x, t) of the momentum equation (only its projection onto the test functions enters).
+    void
+    set_body_force(const std::function<dealii::Tensor<1, 3>(const dealii::Point<3> &, const double)> &force);
+
+    /**
+     * Distributes the Taylor–Hood DoFs and builds constraints and matrices. For
+     * a stationary Stokes problem on a surface with Killing fields
+     * (rotations a × x that leave S invariant), pass the rotation axes; the
+     * right-hand side is made orthogonal to them, and each is removed by
+     * fixing one velocity component at the velocity node nearest to a ray ⊥ a
+     * (where that rotation is largest); InputError if the mesh has no node
+     * near that ray.
+     */
+    void
+    setup(const std::vector<dealii::Tensor<1, 3>> &killing_axes = {});
+
+    /// u_h = I_h u(·, t) (nodal interpolation on the curved surface) for the current and all old steps.
+    void
+    set_initial_velocity(const FlowField &initial, const double time);
+
+    /// Solves the stationary problem (time derivative off).
+    SolveInfo
+    solve_stationary();
+
+    /// One BDF step from t − τ to @p time (the first BDF2 step is a BDF1 step).
+    SolveInfo
+    advance(const double time, const double tau);
+
+    /// F_kin = ½∫|u_h|².
+    double
+    kinetic_energy() const;
+    /// D = (2/Re)∫|σ(u_h)|², so dF_kin/dt = −D for the exact flow.
+    double
+    dissipation_rate() const;
+
+    /// Errors of the current solution against @p exact at @p time.
+    Errors
+    compute_errors(const FlowField &exact, const double time) const;
+
+    const dealii::DoFHandler<2, 3> &
+    dof_handler() const
+    {
+      return flow_dofs;
+    }
+    /// (u, p), ghosted; components 0–2 velocity, 3 pressure (4: the tangentiality multiplier λ, if any).
+    const VectorType &
+    solution() const
+    {
+      return current;
+    }
+    dealii::types::global_dof_index
+    n_velocity_dofs() const
+    {
+      return n_u;
+    }
+    dealii::types::global_dof_index
+    n_pressure_dofs() const
+    {
+      return n_p;
+    }
+    double
+    reynolds_number() const
+    {
+      return parameters.Re;
+    }
+    /// One line naming the discretization and solver choices, for the screen.
+    std::string
+    description() const;
+
+  private:
+    struct ScratchData;
+    struct CopyData;
+
+    void
+    assemble(const double time, const double tau, const bool assemble_matrix);
+    void
+    local_assemble(const typename dealii::DoFHandler<2, 3>::active_cell_iterator &cell,
+                   ScratchData                                                   &scratch,
+                   CopyData                                                      &copy) const;
+    void
+    copy_local_to_global(const CopyData &copy);
+    /// Quadrature of the low-order-refined operator: 2×2 Gauss points on each of the 4 sub-cells.
+    static dealii::Quadrature<2>
+    lor_quadrature();
+    /// The orthonormal frame [t₁ t₂ n] at a velocity node x (n exact if known, else ñ/|ñ|); the
+    /// identity at a @p cartesian (constrained) node and on meshes with hanging nodes.
+    dealii::Tensor<2, 3>
+    lor_frame(const dealii::Point<3> &x, const dealii::Tensor<1, 3> &smooth_normal, const bool cartesian) const;
+    void
+    remove_killing_components_from_rhs();
+    /// The constraints fixing the Killing fields at one node per axis (direct solver).
+    void
+    pin_killing_fields();
+    SolveInfo
+    solve(const bool matrix_changed, const bool coefficients_changed);
+    unsigned int
+    solve_block_preconditioned(VectorType &x);
+
+    const SurfaceGeometry &geometry;
+    MPI_Comm               communicator;
+
+    Parameters parameters;
+
+    // Terms switched by the scene.
+    bool with_time_derivative = false;
+    bool with_convection      = false;
+
+    std::function<dealii::Tensor<1, 3>(const dealii::Point<3> &)>               exact_normal;
+    std::function<dealii::Tensor<1, 3>(const dealii::Point<3> &, const double)> body_force;
+    std::vector<dealii::Tensor<1, 3>>                                            killing;
+
+    dealii::FESystem<2, 3>            fe;
+    /// [Q1 iso Q2]³ × Q1: piecewise bilinear on the 4 sub-cells, with the DoF layout of fe.
+    dealii::FESystem<2, 3>            lor_fe;
+    /// Per sub-cell of the low-order-refined operator: its 12 local velocity DoFs, its quadrature points.
+    std::vector<std::vector<unsigned int>> lor_subcell_dofs, lor_subcell_points;
+    std::vector<unsigned int>              lor_dof_node; ///< local velocity DoF → its node (0–8) in the cell
+    bool hanging_nodes = false; ///< the mesh has hanging nodes (node frames are then Cartesian)
+    /// Owned velocity nodes (the local indices of their x, y, z DoFs in the velocity block) and their
+    /// frames [t₁ t₂ n], for the velocity AMG in node frames.
+    std::vector<std::pair<std::array<dealii::types::global_dof_index, 3>, dealii::Tensor<2, 3>>> lor_nodes;
+    dealii::DoFHandler<2, 3>          flow_dofs;
+    dealii::types::global_dof_index   n_u = 0, n_p = 0;
+    dealii::IndexSet                  owned, relevant;
+    std::vector<dealii::IndexSet>     owned_partitioning, relevant_partitioning;
+    dealii::AffineConstraints<double> constraints;
+
+    dealii::TrilinosWrappers::SparseMatrix      system_matrix;
+    dealii::TrilinosWrappers::BlockSparseMatrix preconditioner_matrix; ///< A_uu without convection; M_p
+    dealii::TrilinosWrappers::BlockSparseMatrix pressure_laplace;      ///< L_p (time-dependent runs)
+    dealii::TrilinosWrappers::SparseMatrix      lor_velocity_matrix;   ///< A_uu with Q1 on the sub-cells
+    VectorType                                  system_rhs;
+    VectorType                                  unconstrained_rhs; ///< F before constraints (stationary)
+    std::vector<VectorType>                     killing_moments;   ///< m_a = (a × x, φ_i)
+    VectorType                                  current, old, older; ///< u^{m+1}, u^m, u^{m−1} (ghosted)
+    unsigned int                                n_steps_done           = 0;
+    double                                      current_tau            = 0;
+    double                                      current_time_for_force = 0;
+    double                                      assembled_tau          = 0; ///< τ of the assembled matrix
+    double                                      assembled_alpha0       = 0; ///< α₀ of the assembled matrix
+
+    // What the last solve leaves for the next one.
+    dealii::SolverControl                                          direct_control;
+    std::unique_ptr<dealii::TrilinosWrappers::SolverDirect>        factorization;
+    std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG>     velocity_amg;
+    std::unique_ptr<dealii::TrilinosWrappers::SolverDirect>        velocity_direct;
+    std::vector<double> rigid_motions; ///< ML null space of the velocity block (6 modes, node-wise)
+    std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG>     pressure_mass_amg;
+    std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG>     pressure_laplace_amg;
+    bool                                                           matrix_assembled = false;
+    bool preconditioner_outdated = true; ///< the next assembly must build the preconditioner matrices
+  };
+
+} // namespace FluidSurface
+
+#endif

@@ -1,0 +1,222 @@
+#ifndef fluid_surface_geometry_surface_geometry_h
+#define fluid_surface_geometry_surface_geometry_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_fe_field.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <fluid_surface/reference/axisymmetric_equilibrium.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace FluidSurface
+{
+  /// The vector type of every distributed field (position, velocity, curvature).
+  using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+
+  /**
+   * The moving closed surface S: a parallel::distributed::Triangulation<2,3>
+   * of quadrilaterals, the position field X ∈ [Q_k]³ and the MappingFEField
+   * that makes X the geometry of every finite element computation.
+   *
+   * It measures what needs no flow: area |S|, enclosed volume V = ⅓∫X·ν,
+   * reduced volume v = 6√π V / |S|^{3/2}, centre of mass, the weak curvature
+   * vector κ = Hν from (κ, η) = −(∇_S X, ∇_S η) (so H = −2/R on a sphere of
+   * radius R with the outward normal ν), the Willmore energy ½∫|κ|², a
+   * continuous unit normal ñ (L2 projection of the cell normals), and a mesh
+   * quality figure.
+   */
+  class SurfaceGeometry
+  {
+  public:
+    /// The initial shape.
+    enum class Shape
+    {
+      sphere,
+      ellipsoid,
+      mesh_file,
+      equilibrium ///< a rotating axisymmetric equilibrium of `subsection equilibrium`
+    };
+
+    /// Integral measures of the surface.
+    struct Measures
+    {
+      double               area           = 0; ///< |S| = ∫1
+      double               volume         = 0; ///< V = ⅓∫X·ν
+      double               reduced_volume = 0; ///< v = V / (4π/3 (|S|/4π)^{3/2})
+      dealii::Tensor<1, 3> centre_of_mass;     ///< x_c = ∫X / |S|
+      double               mesh_quality = 0;   ///< min over cells of σ_min/σ_max of the cell Jacobian
+    };
+
+    explicit SurfaceGeometry(const MPI_Comm communicator);
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Builds the mesh, the position field X and the mapping from the parameters.
+    void
+    create();
+
+    /**
+     * Moves every node of the position field: X ↦ f(X). Used for the initial
+     * shape (sphere → ellipsoid, projection of a gmsh mesh, an equilibrium
+     * shape) and for shape perturbations.
+     */
+    void
+    transform_nodes(const std::function<dealii::Point<3>(const dealii::Point<3> &)> &f);
+
+    /// Replaces the position field (a step's new X, locally owned entries).
+    void
+    set_position(const VectorType &new_position);
+
+    const dealii::parallel::distributed::Triangulation<2, 3> &
+    triangulation() const
+    {
+      return tria;
+    }
+    dealii::parallel::distributed::Triangulation<2, 3> &
+    triangulation()
+    {
+      return tria;
+    }
+    const dealii::DoFHandler<2, 3> &
+    dof_handler() const
+    {
+      return position_dofs;
+    }
+    const dealii::FESystem<2, 3> &
+    fe() const
+    {
+      return *position_fe;
+    }
+    /// The position field X, ghosted.
+    const VectorType &
+    position() const
+    {
+      return position_ghosted;
+    }
+    const dealii::Mapping<2, 3> &
+    mapping() const
+    {
+      return *surface_mapping;
+    }
+    const dealii::IndexSet &
+    locally_owned_dofs() const
+    {
+      return owned_dofs;
+    }
+    const dealii::IndexSet &
+    locally_relevant_dofs() const
+    {
+      return relevant_dofs;
+    }
+    unsigned int
+    degree() const
+    {
+      return position_degree;
+    }
+    /// A Gauss quadrature exact enough for integrals over the curved cells.
+    dealii::QGauss<2>
+    quadrature() const
+    {
+      return dealii::QGauss<2>(position_degree + 2);
+    }
+    MPI_Comm
+    get_communicator() const
+    {
+      return communicator;
+    }
+
+    /// Area, volume, reduced volume, centre of mass and mesh quality.
+    Measures
+    measure() const;
+
+    /**
+     * Solves (κ, η) = −(∇_S X, ∇_S η) for the curvature vector κ = Hν and
+     * (ñ, η) = (ν_h, η) for the continuous normal (normalized at the nodes).
+     * Returns the Willmore energy ½∫|κ|².
+     */
+    double
+    compute_curvature();
+
+    /// κ = Hν from the last compute_curvature(), ghosted.
+    const VectorType &
+    curvature_vector() const
+    {
+      return curvature_ghosted;
+    }
+    /// ñ from the last compute_curvature(), ghosted.
+    const VectorType &
+    normal_field() const
+    {
+      return normal_ghosted;
+    }
+
+    /// Nodal mean curvature H = κ·ñ, stored in all three components of each node, ghosted.
+    const VectorType &
+    mean_curvature_nodes() const
+    {
+      return mean_curvature_ghosted;
+    }
+
+    /**
+     * The rotating axisymmetric equilibrium the initial surface was mapped onto (shape = equilibrium), or
+     * nullptr. Its axis is z through the origin.
+     */
+    const AxisymmetricEquilibrium *
+    equilibrium_shape() const
+    {
+      return equilibrium.get();
+    }
+
+    /// A short description of the shape for the screen ("ellipsoid [0.61, 0.61, 2.02]").
+    std::string
+    description() const;
+
+  private:
+    void
+    read_mesh_file();
+    void
+    setup_position_space();
+    void
+    check_closed_and_outward() const;
+
+    MPI_Comm communicator;
+
+    Shape                  shape = Shape::ellipsoid;
+    double                 radius = 1.0;
+    dealii::Point<3>       semi_axes;
+    std::string            mesh_file;
+    bool                   project_onto_ellipsoid = true;
+    unsigned int           refinement             = 3;
+    unsigned int           position_degree        = 2;
+    std::unique_ptr<AxisymmetricEquilibrium> equilibrium;
+
+    dealii::parallel::distributed::Triangulation<2, 3> tria;
+    std::unique_ptr<dealii::FESystem<2, 3>>           position_fe;
+    dealii::DoFHandler<2, 3>                          position_dofs;
+    dealii::IndexSet                                  owned_dofs;
+    dealii::IndexSet                                  relevant_dofs;
+    dealii::AffineConstraints<double>                 constraints;
+
+    VectorType position_ghosted;
+    VectorType curvature_ghosted;
+    VectorType normal_ghosted;
+    VectorType mean_curvature_ghosted;
+
+    std::unique_ptr<dealii::MappingFEField<2, 3, VectorType>> surface_mapping;
+  };
+} // namespace FluidSurface
+
+#endif

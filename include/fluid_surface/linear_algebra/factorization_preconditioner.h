@@ -1,0 +1,32 @@
+#ifndef fluid_surface_linear_algebra_factorization_preconditioner_h
+#define fluid_surface_linear_algebra_factorization_preconditioner_h
+
+#include <deal.II/lac/trilinos_solver.h>
+
+namespace FluidSurface
+{
+  /**
+   * An LU factorization used as a preconditioner: exact for the matrix it was built from, and a good
+   * preconditioner for the nearby matrices of later time steps (the factorization kept across steps).
+   */
+  class FactorizationPreconditioner
+  {
+  public:
+    explicit FactorizationPreconditioner(dealii::TrilinosWrappers::SolverDirect &lu)
+      : lu(lu)
+    {}
+
+    /// dst = LU⁻¹ src.
+    template <typename Vector>
+    void
+    vmult(Vector &dst, const Vector &src) const
+    {
+      lu.solve(dst, src);
+    }
+
+  private:
+    dealii::TrilinosWrappers::SolverDirect &lu;
+  };
+} // namespace FluidSurface
+
+#endif

@@ -1,0 +1,90 @@
+#ifndef fluid_surface_scenes_fixed_surface_scene_h
+#define fluid_surface_scenes_fixed_surface_scene_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+
+#include <fluid_surface/flow/surface_flow.h>
+#include <fluid_surface/geometry/surface_geometry.h>
+#include <fluid_surface/io/output_writer.h>
+#include <fluid_surface/io/statistics_file.h>
+
+namespace FluidSurface
+{
+  /**
+   * Scene `fixed surface`: surface Stokes/Navier–Stokes on a surface that does
+   * not move (no geometry update, no bending, no volume multiplier), with
+   * exact solutions for verification:
+   *  - manufactured sphere / ellipsoid: stationary Stokes with u = n × ∇ψ,
+   *    ψ = xyz + x²y, p = xy² + z, f = −(2/Re) P div_S σ(u) + ∇_S p;
+   *  - killing: u = ω e_z × x on the unit sphere, p = ½ω²(x² + y²), a steady
+   *    Navier–Stokes solution that keeps its kinetic energy;
+   *  - decaying mode: u = e^{−λt} curl_S Y_l⁰ on the unit sphere,
+   *    λ = (l(l+1) − 2)/Re, with or without convection.
+   */
+  class FixedSurfaceScene
+  {
+  public:
+    /// The verification problem.
+    enum class Problem
+    {
+      manufactured_sphere,
+      manufactured_ellipsoid,
+      killing,
+      decaying_mode
+    };
+
+    /// Numbers of a finished run, for tests and benchmarks.
+    struct Results
+    {
+      SurfaceFlow::Errors errors;                  ///< at the final time
+      double              initial_kinetic_energy = 0;
+      double              final_kinetic_energy   = 0;
+      double              energy_change          = 0; ///< |F(T) − F(0)| / F(0)
+      double              measured_decay_rate    = 0; ///< −ln(F(T)/F(0)) / (2T)
+      double              exact_decay_rate       = 0; ///< (l(l+1) − 2)/Re
+      unsigned int        steps                  = 0;
+      unsigned int        total_iterations       = 0;
+      unsigned int        max_iterations         = 0;
+      unsigned int        factorizations         = 0;
+      double              assemble_time          = 0;
+      double              solve_time             = 0;
+      double              wall_time              = 0;
+      dealii::types::global_dof_index n_dofs     = 0;
+    };
+
+    /// Declares `subsection fixed surface`, `subsection time stepping` and (via SurfaceFlow) `subsection flow`.
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    /// Reads them; checks that the problem matches the shape of `subsection geometry`.
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /// A whole fixed-surface run: stationary solve or time loop, VTU output, statistics rows, screen lines.
+    void
+    run(SurfaceGeometry           &geometry,
+        OutputWriter               &output,
+        StatisticsFile             &statistics,
+        dealii::ConditionalOStream &pcout);
+
+    const Results &
+    results() const
+    {
+      return last_results;
+    }
+
+  private:
+    Problem                 problem       = Problem::manufactured_sphere;
+    unsigned int            mode_number   = 2;
+    double                  omega         = 1.0;
+    double                  end_time      = 1.0;
+    double                  time_step     = 0.01;
+    double                  sphere_radius = 1.0;
+    dealii::Tensor<1, 3>    semi_axes;
+    SurfaceFlow::Parameters flow_parameters;
+    Results                 last_results;
+  };
+} // namespace FluidSurface
+
+#endif

@@ -1,0 +1,124 @@
+#ifndef fluid_surface_time_stepping_time_stepper_h
+#define fluid_surface_time_stepping_time_stepper_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <algorithm>
+#include <string>
+
+namespace FluidSurface
+{
+  class CheckpointData;
+
+  /**
+   * Time and step size τ of a run, with the energy-based step control: a step
+   * whose total energy F rises by more than the tolerance, or whose solve
+   * fails, is rejected and retried with τ·shrink; after a number of easy
+   * steps τ grows by a factor up to τ_max.
+   */
+  class TimeStepper
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    double
+    time() const
+    {
+      return current_time;
+    }
+    /// τ for the next attempt (never past the end time).
+    double
+    step_size() const;
+    unsigned int
+    step_number() const
+    {
+      return n_accepted;
+    }
+    unsigned int
+    n_rejected_steps() const
+    {
+      return n_rejected;
+    }
+    bool
+    before_end() const
+    {
+      return current_time < end_time * (1 - 1e-12);
+    }
+    double
+    final_time() const
+    {
+      return end_time;
+    }
+
+    /// Whether an energy change from @p old_energy to @p new_energy in a step @p tau_used is acceptable.
+    bool
+    energy_acceptable(const double old_energy, const double new_energy, const double tau_used) const;
+
+    /// Advances time by the τ just used; grows τ after enough easy steps.
+    void
+    accept(const double tau_used);
+
+    /// Sets τ for the next step (clipped to [τ_min, τ_max]).
+    void
+    set_step_size(const double new_tau)
+    {
+      tau = std::min(std::max(new_tau, tau_min), tau_max);
+    }
+
+    /// Shrinks τ; throws std::runtime_error with @p reason when τ falls below τ_min.
+    void
+    reject(const std::string &reason);
+
+    /// The state a checkpoint needs to continue bit for bit.
+    struct State
+    {
+      double       time;
+      double       tau;
+      unsigned int n_accepted;
+      unsigned int n_rejected;
+      unsigned int n_easy;
+    };
+    State
+    state() const
+    {
+      return {current_time, tau, n_accepted, n_rejected, n_easy};
+    }
+    void
+    set_state(const State &s)
+    {
+      current_time = s.time;
+      tau          = s.tau;
+      n_accepted   = s.n_accepted;
+      n_rejected   = s.n_rejected;
+      n_easy       = s.n_easy;
+    }
+
+    /// Writes time, τ and the controller counters into a checkpoint (keys `time stepping/…`).
+    void
+    save(CheckpointData &data) const;
+    /// Continues from a checkpoint; the end time and the controller parameters stay those of the prm.
+    void
+    load(const CheckpointData &data);
+
+  private:
+    double       end_time         = 1;
+    double       tau              = 1e-2;
+    double       tau_min          = 1e-7;
+    double       tau_max          = 1e-1;
+    double       growth           = 1.25;
+    double       shrink           = 0.5;
+    unsigned int easy_steps       = 5;
+    double       energy_tolerance = 1e-3;
+    bool         adaptive         = true;
+
+    double       current_time = 0;
+    unsigned int n_accepted   = 0;
+    unsigned int n_rejected   = 0;
+    unsigned int n_easy       = 0;
+  };
+} // namespace FluidSurface
+
+#endif

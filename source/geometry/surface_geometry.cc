@@ -1,0 +1,480 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/geometry/surface_geometry.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace FluidSurface
+{
+  using namespace dealii;
+
+  SurfaceGeometry::SurfaceGeometry(const MPI_Comm communicator)
+    : communicator(communicator)
+    , semi_axes(0.61, 0.61, 2.02)
+    , tria(communicator)
+    , position_dofs(tria)
+  {}
+
+  void
+  SurfaceGeometry::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("geometry");
+    prm.declare_entry("shape",
+                      "ellipsoid",
+                      Patterns::Selection("sphere|ellipsoid|mesh file|equilibrium"),
+                      "Initial shape of the closed surface S: a sphere of radius R, an ellipsoid with "
+                      "semi-axes (a, b, c) along x, y, z (c > a: prolate, c < a: oblate), a gmsh mesh, or "
+                      "the rotating axisymmetric equilibrium of subsection equilibrium (axis z; the nodes of "
+                      "the refined cube sphere are placed on the exact generating curve, polar angle θ ↦ "
+                      "arc length s = 2S θ/π).");
+    prm.declare_entry("radius",
+                      "1",
+                      Patterns::Double(0, Patterns::Double::max_double_value),
+                      "Radius R of the sphere (shape = sphere).");
+    prm.declare_entry("semi-axes",
+                      "0.61, 0.61, 2.02",
+                      Patterns::List(Patterns::Double(), 3, 3),
+                      "Semi-axes a, b, c of the ellipsoid x²/a² + y²/b² + z²/c² = 1 along x, y, z "
+                      "(shape = ellipsoid, or the projection target of a mesh file).");
+    prm.declare_entry("mesh file",
+                      "meshes/ellipsoid.msh",
+                      Patterns::FileName(),
+                      "gmsh mesh (ASCII msh 2.2 or 4.1) of a closed all-quadrilateral surface "
+                      "(shape = mesh file); relative to the working directory.");
+    prm.declare_entry("project onto ellipsoid",
+                      "true",
+                      Patterns::Bool(),
+                      "Move the nodes of a mesh file radially onto the ellipsoid with the given semi-axes.");
+    prm.declare_entry("refinement",
+                      "3",
+                      Patterns::Integer(0, 10),
+                      "Number of global refinements of the coarse mesh (6 cells for a sphere or ellipsoid).");
+    prm.declare_entry("position degree",
+                      "2",
+                      Patterns::Integer(1, 3),
+                      "Polynomial degree k of the position field X ∈ [Q_k]³ that defines the geometry.");
+    prm.leave_subsection();
+    // The equilibrium shape's inputs (read only for shape = equilibrium).
+    AxisymmetricEquilibrium::declare_parameters(prm);
+  }
+
+  void
+  SurfaceGeometry::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("geometry");
+    const std::string s = prm.get("shape");
+    shape  = (s == "sphere"      ? Shape::sphere :
+              s == "ellipsoid"   ? Shape::ellipsoid :
+              s == "equilibrium" ? Shape::equilibrium :
+                                   Shape::mesh_file);
+    radius = prm.get_double("radius");
+    const std::vector<std::string> axes =
+      Utilities::split_string_list(prm.get("semi-axes"));
+    for (unsigned int d = 0; d < 3; ++d)
+      {
+        semi_axes[d] = Utilities::string_to_double(axes[d]);
+        if (!(semi_axes[d] > 0))
+          throw_invalid_entry("geometry/semi-axes",
+                              prm.get("semi-axes"),
+                              "three positive semi-axes a, b, c");
+      }
+    mesh_file              = prm.get("mesh file");
+    project_onto_ellipsoid = prm.get_bool("project onto ellipsoid");
+    refinement             = prm.get_integer("refinement");
+    position_degree        = prm.get_integer("position degree");
+    if (shape == Shape::mesh_file)
+      {
+        std::ifstream in(mesh_file);
+        if (!in)
+          throw_invalid_entry("geometry/mesh file", mesh_file, "a readable gmsh mesh file");
+      }
+    prm.leave_subsection();
+    equilibrium.reset();
+    if (shape == Shape::equilibrium)
+      {
+        equilibrium = std::make_unique<AxisymmetricEquilibrium>();
+        equilibrium->parse_parameters(prm);
+      }
+  }
+
+  std::string
+  SurfaceGeometry::description() const
+  {
+    std::ostringstream out;
+    if (shape == Shape::sphere)
+      out << "sphere R = " << radius;
+    else if (shape == Shape::equilibrium)
+      out << (equilibrium->parameters().branch == AxisymmetricEquilibrium::Branch::prolate ? "prolate" : "oblate")
+          << " rotating equilibrium, A = " << equilibrium->parameters().area
+          << ", v = " << equilibrium->parameters().reduced_volume;
+    else
+      {
+        if (shape == Shape::mesh_file)
+          out << "mesh " << std::filesystem::path(mesh_file).filename().string() << (project_onto_ellipsoid ? " projected onto " : "");
+        if (shape == Shape::ellipsoid || project_onto_ellipsoid)
+          out << "ellipsoid [" << semi_axes[0] << ", " << semi_axes[1] << ", " << semi_axes[2] << "]";
+      }
+    out << ", Q" << position_degree << " geometry, refinement " << refinement;
+    return out.str();
+  }
+
+  void
+  SurfaceGeometry::read_mesh_file()
+  {
+    // A coarse mesh is small: every rank reads it.
+    Triangulation<2, 3> coarse;
+    GridIn<2, 3>        grid_in;
+    grid_in.attach_triangulation(coarse);
+    std::ifstream in(mesh_file);
+    try
+      {
+        grid_in.read_msh(in);
+      }
+    catch (const ExceptionBase &exc)
+      {
+        std::ostringstream msg;
+        exc.print_info(msg);
+        throw InputError(mesh_file + ": cannot read the gmsh mesh (expected an ASCII msh 2.2/4.1 file of "
+                                     "quadrilaterals): " +
+                         msg.str());
+      }
+    if (!coarse.all_reference_cells_are_hyper_cube())
+      throw InputError(mesh_file + ": the mesh has triangles; expected an all-quadrilateral surface mesh "
+                                   "(recombine in gmsh: Mesh.RecombineAll = 1, Mesh.SubdivisionAlgorithm = 1).");
+    for (const auto &cell : coarse.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          throw InputError(mesh_file + ": the surface has a boundary edge at " +
+                           Utilities::to_string(cell->face(f)->center()[0]) + ", " +
+                           Utilities::to_string(cell->face(f)->center()[1]) + ", " +
+                           Utilities::to_string(cell->face(f)->center()[2]) +
+                           "; expected a closed surface.");
+    tria.copy_triangulation(coarse);
+  }
+
+  void
+  SurfaceGeometry::create()
+  {
+    if (shape == Shape::mesh_file)
+      read_mesh_file();
+    else
+      {
+        GridGenerator::hyper_sphere(tria, Point<3>(), 1.0);
+        tria.set_all_manifold_ids(0);
+        tria.set_manifold(0, SphericalManifold<2, 3>(Point<3>()));
+      }
+    tria.refine_global(refinement);
+    setup_position_space();
+
+    // Nodes of the refined coarse geometry (on the unit sphere for the
+    // generated shapes), then moved onto the requested shape.
+    {
+      VectorType owned(owned_dofs, communicator);
+      VectorTools::get_position_vector(MappingQ<2, 3>(position_degree), position_dofs, owned);
+      set_position(owned);
+    }
+    if (shape == Shape::sphere)
+      transform_nodes([this](const Point<3> &x) { return Point<3>(radius / x.norm() * x); });
+    else if (shape == Shape::ellipsoid)
+      transform_nodes([this](const Point<3> &x) {
+        const Point<3> u = x / x.norm();
+        return Point<3>(semi_axes[0] * u[0], semi_axes[1] * u[1], semi_axes[2] * u[2]);
+      });
+    else if (shape == Shape::equilibrium)
+      {
+        try
+          {
+            equilibrium->solve();
+          }
+        catch (const std::exception &exc)
+          {
+            throw InputError(parameter_file_name() + ": subsection equilibrium: no equilibrium shape found (" +
+                             exc.what() + "); expected area, reduced volume, branch and rotation of an "
+                             "existing up-down symmetric rotating equilibrium.");
+          }
+        transform_nodes([this](const Point<3> &x) { return equilibrium->map_from_sphere(Point<3>(x / x.norm())); });
+      }
+    else if (project_onto_ellipsoid)
+      transform_nodes([this](const Point<3> &x) {
+        double s = 0;
+        for (unsigned int d = 0; d < 3; ++d)
+          s += x[d] * x[d] / (semi_axes[d] * semi_axes[d]);
+        return Point<3>(x / std::sqrt(s));
+      });
+    // The manifold describes only the unit sphere; the position field is the geometry from now on.
+    tria.reset_all_manifolds();
+    check_closed_and_outward();
+  }
+
+  void
+  SurfaceGeometry::setup_position_space()
+  {
+    position_fe = std::make_unique<FESystem<2, 3>>(FE_Q<2, 3>(position_degree), 3);
+    position_dofs.distribute_dofs(*position_fe);
+    owned_dofs = position_dofs.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(position_dofs, relevant_dofs);
+    constraints.clear();
+    constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(position_dofs, constraints);
+    constraints.close();
+
+    position_ghosted.reinit(owned_dofs, relevant_dofs, communicator);
+    curvature_ghosted.reinit(owned_dofs, relevant_dofs, communicator);
+    normal_ghosted.reinit(owned_dofs, relevant_dofs, communicator);
+    mean_curvature_ghosted.reinit(owned_dofs, relevant_dofs, communicator);
+    surface_mapping = std::make_unique<MappingFEField<2, 3, VectorType>>(position_dofs, position_ghosted);
+  }
+
+  void
+  SurfaceGeometry::set_position(const VectorType &new_position)
+  {
+    VectorType owned(owned_dofs, communicator);
+    owned = new_position;
+    // Hanging nodes must follow their parents, or the surface cracks.
+    constraints.distribute(owned);
+    position_ghosted = owned;
+  }
+
+  namespace
+  {
+    /**
+     * Calls f(i, j) for the three DoF indices of every locally owned support
+     * point of a [Q_k]³ field: the position of node i is (X[i0], X[i1], X[i2]).
+     */
+    void
+    for_each_owned_node(const DoFHandler<2, 3>                                          &dofs,
+                        const std::function<void(const std::array<types::global_dof_index, 3> &)> &f)
+    {
+      const FiniteElement<2, 3>           &fe = dofs.get_fe();
+      std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+      std::vector<bool>                    visited(dofs.locally_owned_dofs().n_elements(), false);
+      const IndexSet                      &owned = dofs.locally_owned_dofs();
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned() || cell->is_ghost())
+          {
+            cell->get_dof_indices(indices);
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              if (fe.system_to_component_index(i).first == 0 && owned.is_element(indices[i]) &&
+                  !visited[owned.index_within_set(indices[i])])
+                {
+                  std::array<types::global_dof_index, 3> node;
+                  const unsigned int base = fe.system_to_component_index(i).second;
+                  for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+                    if (fe.system_to_component_index(j).second == base)
+                      node[fe.system_to_component_index(j).first] = indices[j];
+                  visited[owned.index_within_set(indices[i])] = true;
+                  f(node);
+                }
+          }
+    }
+  } // namespace
+
+  void
+  SurfaceGeometry::transform_nodes(const std::function<Point<3>(const Point<3> &)> &f)
+  {
+    VectorType owned(owned_dofs, communicator);
+    owned = position_ghosted;
+    const VectorType &old_position = position_ghosted;
+    for_each_owned_node(position_dofs, [&](const std::array<types::global_dof_index, 3> &node) {
+      // All three components of an owned node are owned (same support point, same owner).
+      const Point<3> x(old_position[node[0]], old_position[node[1]], old_position[node[2]]);
+      const Point<3> y = f(x);
+      for (unsigned int d = 0; d < 3; ++d)
+        owned[node[d]] = y[d];
+    });
+    owned.compress(VectorOperation::insert);
+    set_position(owned);
+  }
+
+  SurfaceGeometry::Measures
+  SurfaceGeometry::measure() const
+  {
+    const QGauss<2>   q = quadrature();
+    FEValues<2, 3>    fe_values(mapping(), fe(), q, update_quadrature_points | update_normal_vectors |
+                                                  update_JxW_values | update_jacobians);
+    double            local[5]    = {0, 0, 0, 0, 0};
+    double            min_quality = 1.0;
+    for (const auto &cell : position_dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          for (unsigned int k = 0; k < q.size(); ++k)
+            {
+              const Point<3> &x  = fe_values.quadrature_point(k);
+              const double    dA = fe_values.JxW(k);
+              local[0] += dA;
+              local[1] += x * fe_values.normal_vector(k) * dA / 3.0;
+              for (unsigned int d = 0; d < 3; ++d)
+                local[2 + d] += x[d] * dA;
+              // Singular values of the 3×2 Jacobian from its 2×2 Gram matrix.
+              const DerivativeForm<1, 2, 3> &J = fe_values.jacobian(k);
+              double                         g[3] = {0, 0, 0};
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  g[0] += J[d][0] * J[d][0];
+                  g[1] += J[d][0] * J[d][1];
+                  g[2] += J[d][1] * J[d][1];
+                }
+              const double mean = 0.5 * (g[0] + g[2]);
+              const double dev  = std::sqrt(0.25 * (g[0] - g[2]) * (g[0] - g[2]) + g[1] * g[1]);
+              min_quality       = std::min(min_quality, std::sqrt(std::max(mean - dev, 0.0) / (mean + dev)));
+            }
+        }
+    Utilities::MPI::sum(ArrayView<const double>(local, 5), communicator, ArrayView<double>(local, 5));
+    Measures m;
+    m.area   = local[0];
+    m.volume = local[1];
+    for (unsigned int d = 0; d < 3; ++d)
+      m.centre_of_mass[d] = local[2 + d] / m.area;
+    m.reduced_volume = m.volume / (4.0 * numbers::PI / 3.0 * std::pow(m.area / (4.0 * numbers::PI), 1.5));
+    m.mesh_quality   = Utilities::MPI::min(min_quality, communicator);
+    return m;
+  }
+
+  void
+  SurfaceGeometry::check_closed_and_outward() const
+  {
+    // Outward normals: ν·(x − x_c) > 0 at every cell centre of the initial
+    // (star-shaped) surface; a mesh with inward or mixed orientation is rejected.
+    const Measures     m = measure();
+    const QGauss<2>    q(1);
+    FEValues<2, 3>     fe_values(mapping(), fe(), q, update_quadrature_points | update_normal_vectors);
+    unsigned int       n_inward = 0;
+    for (const auto &cell : position_dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          if ((fe_values.quadrature_point(0) - Point<3>(m.centre_of_mass)) * fe_values.normal_vector(0) <= 0)
+            ++n_inward;
+        }
+    n_inward = Utilities::MPI::sum(n_inward, communicator);
+    if (n_inward > 0)
+      {
+        const std::string source = (shape == Shape::mesh_file ? mesh_file : std::string("generated mesh"));
+        throw InputError(source + ": " + Utilities::to_string(n_inward) + " of " +
+                         Utilities::to_string(tria.n_global_active_cells()) +
+                         " cells have inward normals; expected a closed, star-shaped surface whose cells "
+                         "are all ordered counter-clockwise seen from outside (gmsh: Reverse Surface).");
+      }
+  }
+
+  double
+  SurfaceGeometry::compute_curvature()
+  {
+    DynamicSparsityPattern dsp(relevant_dofs);
+    DoFTools::make_sparsity_pattern(position_dofs, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, communicator, relevant_dofs);
+    TrilinosWrappers::SparseMatrix mass;
+    mass.reinit(owned_dofs, owned_dofs, dsp, communicator);
+    VectorType rhs_curvature(owned_dofs, communicator), rhs_normal(owned_dofs, communicator);
+
+    const QGauss<2>                      q = quadrature();
+    FEValues<2, 3>                       fe_values(mapping(), fe(), q, update_values | update_gradients |
+                                                                  update_normal_vectors | update_JxW_values);
+    const FEValuesExtractors::Vector     vec(0);
+    const unsigned int                   n = fe().n_dofs_per_cell();
+    FullMatrix<double>                   cell_mass(n, n);
+    Vector<double>                       cell_rhs_curvature(n), cell_rhs_normal(n);
+    std::vector<types::global_dof_index> indices(n);
+    for (const auto &cell : position_dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell_mass          = 0;
+          cell_rhs_curvature = 0;
+          cell_rhs_normal    = 0;
+          for (unsigned int k = 0; k < q.size(); ++k)
+            {
+              const double          dA = fe_values.JxW(k);
+              const Tensor<1, 3>   &nu = fe_values.normal_vector(k);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const Tensor<1, 3> phi_i = fe_values[vec].value(i, k);
+                  // ∇_S X = P, so (∇_S X, ∇_S η) = (P, ∇_S η) = div_S η.
+                  cell_rhs_curvature(i) -= fe_values[vec].divergence(i, k) * dA;
+                  cell_rhs_normal(i) += phi_i * nu * dA;
+                  for (unsigned int j = 0; j < n; ++j)
+                    cell_mass(i, j) += phi_i * fe_values[vec].value(j, k) * dA;
+                }
+            }
+          cell->get_dof_indices(indices);
+          constraints.distribute_local_to_global(cell_mass, cell_rhs_curvature, indices, mass, rhs_curvature);
+          constraints.distribute_local_to_global(cell_rhs_normal, indices, rhs_normal);
+        }
+    mass.compress(VectorOperation::add);
+    rhs_curvature.compress(VectorOperation::add);
+    rhs_normal.compress(VectorOperation::add);
+
+    TrilinosWrappers::PreconditionJacobi jacobi;
+    jacobi.initialize(mass);
+    auto solve = [&](const VectorType &rhs, VectorType &ghosted) {
+      VectorType    solution(owned_dofs, communicator);
+      SolverControl control(1000, 1e-14 * rhs.l2_norm());
+      SolverCG<VectorType> cg(control);
+      cg.solve(mass, solution, rhs, jacobi);
+      constraints.distribute(solution);
+      ghosted = solution;
+    };
+    solve(rhs_curvature, curvature_ghosted);
+    solve(rhs_normal, normal_ghosted);
+
+    // ñ is normalized node by node.
+    {
+      VectorType owned(owned_dofs, communicator);
+      owned = normal_ghosted;
+      const VectorType &n = normal_ghosted;
+      for_each_owned_node(position_dofs, [&](const std::array<types::global_dof_index, 3> &node) {
+        const double norm = std::sqrt(n[node[0]] * n[node[0]] + n[node[1]] * n[node[1]] + n[node[2]] * n[node[2]]);
+        for (unsigned int d = 0; d < 3; ++d)
+          owned[node[d]] = n[node[d]] / norm;
+      });
+      owned.compress(VectorOperation::insert);
+      normal_ghosted = owned;
+    }
+    // Nodal H = κ·ñ, repeated in the three components of each node.
+    {
+      VectorType        owned(owned_dofs, communicator);
+      const VectorType &n = normal_ghosted;
+      const VectorType &k = curvature_ghosted;
+      for_each_owned_node(position_dofs, [&](const std::array<types::global_dof_index, 3> &node) {
+        const double h = k[node[0]] * n[node[0]] + k[node[1]] * n[node[1]] + k[node[2]] * n[node[2]];
+        for (unsigned int d = 0; d < 3; ++d)
+          owned[node[d]] = h;
+      });
+      owned.compress(VectorOperation::insert);
+      mean_curvature_ghosted = owned;
+    }
+
+    // Willmore energy ½∫|κ|².
+    double                      local_energy = 0;
+    std::vector<Tensor<1, 3>>   kappa(q.size());
+    FEValues<2, 3>              fe_values_kappa(mapping(), fe(), q, update_values | update_JxW_values);
+    for (const auto &cell : position_dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values_kappa.reinit(cell);
+          fe_values_kappa[vec].get_function_values(curvature_ghosted, kappa);
+          for (unsigned int k = 0; k < q.size(); ++k)
+            local_energy += 0.5 * kappa[k].norm_square() * fe_values_kappa.JxW(k);
+        }
+    return Utilities::MPI::sum(local_energy, communicator);
+  }
+} // namespace FluidSurface

@@ -1,0 +1,138 @@
+#include <fluid_surface/io/checkpoint.h>
+#include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/time_stepping/time_stepper.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace FluidSurface
+{
+  using namespace dealii;
+
+  void
+  TimeStepper::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("time stepping");
+    prm.declare_entry("end time", "1", Patterns::Double(0), "End time T of the run.");
+    prm.declare_entry("time step",
+                      "1e-2",
+                      Patterns::Double(0, Patterns::Double::max_double_value),
+                      "Initial time step τ₀.");
+    prm.declare_entry("adaptive", "true", Patterns::Bool(), "Adapt τ: shrink on rejected steps, grow on easy ones.");
+    prm.declare_entry("minimum time step",
+                      "1e-7",
+                      Patterns::Double(0, Patterns::Double::max_double_value),
+                      "τ_min: a run that needs a smaller step stops with an error.");
+    prm.declare_entry("maximum time step",
+                      "0.05",
+                      Patterns::Double(0, Patterns::Double::max_double_value),
+                      "τ_max: the largest step the controller takes.");
+    prm.declare_entry("growth factor", "1.25", Patterns::Double(1), "Factor by which τ grows after easy steps.");
+    prm.declare_entry("shrink factor",
+                      "0.5",
+                      Patterns::Double(0, 1),
+                      "Factor by which τ shrinks after a rejected step.");
+    prm.declare_entry("easy steps before growth",
+                      "5",
+                      Patterns::Integer(1),
+                      "Number of consecutive accepted steps before τ grows.");
+    prm.declare_entry("energy tolerance",
+                      "1e-3",
+                      Patterns::Double(0),
+                      "ε_F: a step is rejected when F(t+τ) > F(t) + (ε_F·τ + 10⁻⁹)·|F(t)|, i.e. when the total energy "
+                      "rises faster than the relative rate ε_F (a rate, so that it does not shrink with τ: the "
+                      "space discretization is not exactly energy-consistent, see doc/scheme.md).");
+    prm.leave_subsection();
+  }
+
+  void
+  TimeStepper::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("time stepping");
+    end_time         = prm.get_double("end time");
+    tau              = prm.get_double("time step");
+    adaptive         = prm.get_bool("adaptive");
+    tau_min          = prm.get_double("minimum time step");
+    tau_max          = prm.get_double("maximum time step");
+    growth           = prm.get_double("growth factor");
+    shrink           = prm.get_double("shrink factor");
+    easy_steps       = prm.get_integer("easy steps before growth");
+    energy_tolerance = prm.get_double("energy tolerance");
+    if (tau_min > tau_max)
+      throw_invalid_entry("time stepping/minimum time step",
+                          prm.get("minimum time step"),
+                          "a value not larger than 'maximum time step'");
+    if (tau > tau_max && adaptive)
+      throw_invalid_entry("time stepping/time step", prm.get("time step"), "τ₀ ≤ 'maximum time step'");
+    prm.leave_subsection();
+    current_time = 0;
+    n_accepted = n_rejected = n_easy = 0;
+  }
+
+  double
+  TimeStepper::step_size() const
+  {
+    const double remaining = end_time - current_time;
+    // Avoid a sliver of a last step.
+    return (remaining < 1.5 * tau) ? (remaining > tau ? 0.5 * remaining : remaining) : tau;
+  }
+
+  bool
+  TimeStepper::energy_acceptable(const double old_energy, const double new_energy, const double tau_used) const
+  {
+    // The 1e-9 floor is the level at which F is computed reliably (solver and quadrature rounding).
+    return std::isfinite(new_energy) &&
+           new_energy <= old_energy + (energy_tolerance * tau_used + 1e-9) * std::abs(old_energy);
+  }
+
+  void
+  TimeStepper::accept(const double tau_used)
+  {
+    current_time += tau_used;
+    if (end_time - current_time < 1e-12 * std::max(1.0, end_time))
+      current_time = end_time;
+    ++n_accepted;
+    if (adaptive && ++n_easy >= easy_steps)
+      {
+        tau    = std::min(tau * growth, tau_max);
+        n_easy = 0;
+      }
+  }
+
+  void
+  TimeStepper::reject(const std::string &reason)
+  {
+    ++n_rejected;
+    n_easy = 0;
+    if (!adaptive || tau * shrink < tau_min)
+      {
+        std::ostringstream msg;
+        msg << "step rejected at t = " << current_time << " with τ = " << tau << " (" << reason << ")"
+            << (adaptive ? "; τ would fall below 'minimum time step'" : "; 'adaptive' is off");
+        throw std::runtime_error(msg.str());
+      }
+    tau *= shrink;
+  }
+
+  void
+  TimeStepper::save(CheckpointData &data) const
+  {
+    data.set("time stepping/time", current_time);
+    data.set("time stepping/tau", tau);
+    data.set("time stepping/steps", n_accepted);
+    data.set("time stepping/rejected steps", n_rejected);
+    data.set("time stepping/easy steps", n_easy);
+  }
+
+  void
+  TimeStepper::load(const CheckpointData &data)
+  {
+    set_state({data.get_double("time stepping/time"),
+               data.get_double("time stepping/tau"),
+               data.get_unsigned("time stepping/steps"),
+               data.get_unsigned("time stepping/rejected steps"),
+               data.get_unsigned("time stepping/easy steps")});
+  }
+} // namespace FluidSurface
