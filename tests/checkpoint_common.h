@@ -43,7 +43,7 @@ namespace CheckpointTest
                      {"geometry/refinement", "2"},
                      // Direct solves: with the factorization kept across steps (the default) a run agrees
                      // bit for bit only with runs that checkpoint at the same steps (see checkpoint/resume).
-                     {"flow/reuse factorization", "false"},
+                     {"linear solver/reuse factorization", "false"},
                      {"initial state/angular velocity", "4"},
                      {"time stepping/end time", "0.06"},
                      {"time stepping/time step", "0.01"},

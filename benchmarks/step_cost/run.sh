@@ -1,7 +1,7 @@
 #!/bin/bash
 # Cost of one step of scene full: wall time per step and its split (assembly, factorization, linear solve,
 # curvature and energy, diagnostics, output) with the MUMPS factorization refactorized every step
-# (`flow/reuse factorization = false`, the previous behaviour) and reused as the GMRES preconditioner.
+# (`linear solver/reuse factorization = false`, the previous behaviour) and reused as the GMRES preconditioner.
 # The rotating prolate of prm/prolate.prm, t ∈ [0, T] (T = 0.2; --quick: 0.05), refinements 2 and 3, 3 runs each.
 # Run from the repository root: FLUID_SURFACE=./build/fluid_surface benchmarks/step_cost/run.sh [--quick]
 set -uo pipefail
@@ -20,7 +20,7 @@ include $PWD/prm/prolate.prm
 subsection geometry
   set refinement = $r
 end
-subsection flow
+subsection linear solver
   set reuse factorization = $reuse
 end
 subsection time stepping

@@ -43,7 +43,7 @@ def record(case, settings, r):
            "shape": s.get("geometry/shape", "sphere"), "k": s.get("geometry/position degree", "2"),
            "refinement": s["geometry/refinement"], "dofs": r["dofs"],
            "solver": s.get("flow/linear solver", "direct") + ("" if s.get("flow/linear solver", "direct") != "direct"
-                                                             else " " + s.get("flow/direct solver", "Amesos_Klu")),
+                                                             else " " + s.get("linear solver/direct solver", "Amesos_Klu")),
            "scheme": s.get("flow/time scheme", "BDF2"), "convection": s.get("flow/convection", "true"),
            "Re": s.get("flow/Re", "1"),
            "penalty factor": "" if s.get("flow/tangentiality") == "multiplier" else s.get("flow/penalty factor", "10"),
@@ -90,7 +90,7 @@ for k in (2, 3) if not multiplier_only else ():
             s = {"geometry/shape": "sphere", "geometry/refinement": ref, "geometry/position degree": k,
                  "flow/linear solver": solver[0]}
             if solver[1]:
-                s["flow/direct solver"] = solver[1]
+                s["linear solver/direct solver"] = solver[1]
             record("stationary solver", s, run(s))
 for ref in range(1, max_ref + 1) if not (solvers_only or multiplier_only) else ():
     s = {"geometry/shape": "sphere", "geometry/refinement": ref, "flow/linear solver": "block preconditioned",
@@ -156,11 +156,11 @@ for ref in range(2, (3 if quick else 4) + 1) if not multiplier_only else ():
     cartesian = {**block, "flow/velocity AMG node frames": "false"}
     lor = {**block, "flow/velocity AMG operator": "low-order refined"}
     stokes = {"flow/convection": "false"}
-    for extra in ({}, {"flow/reuse factorization": "false"}, block, cartesian, lor,
+    for extra in ({}, {"linear solver/reuse factorization": "false"}, block, cartesian, lor,
                   stokes, {**stokes, **block}, {**stokes, **cartesian}, {**stokes, **lor}):
         s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface/problem": "decaying mode",
              "flow/Re": 10, "time stepping/time step": 0.05, "time stepping/end time": 1, **extra}
-        tag = "time solver" + ("" if "flow/reuse factorization" not in extra else " no reuse")
+        tag = "time solver" + ("" if "linear solver/reuse factorization" not in extra else " no reuse")
         record(tag, s, run(s))
 
 with open(os.path.join(outdir, "results.csv"), "w", newline="") as f:

@@ -10,7 +10,6 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/block_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -18,9 +17,6 @@
 #include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/flow/surface_flow.h>
 #include <fluid_surface/geometry/surface_operators.h>
-
-#include <Epetra_MultiVector.h>
-#include <Teuchos_ParameterList.hpp>
 
 #include <limits>
 #include <map>
@@ -118,24 +114,6 @@ namespace FluidSurface
                       "components; the penalty η(u·n, v·n) then acts on the normal DoFs only. Stationary "
                       "sphere, GMRES iterations at refinements 3–6 (Q2 operator): 30, 44, 46, 54 Cartesian; "
                       "29, 26, 31, 33 in node frames (benchmarks/surface_stokes).");
-    prm.declare_entry("direct solver",
-                      "Amesos_Klu",
-                      Patterns::Selection("Amesos_Klu|Amesos_Mumps"),
-                      "Amesos package of the sparse direct solver.");
-    prm.declare_entry("reuse factorization",
-                      "true",
-                      Patterns::Bool(),
-                      "With convection (matrix changes every step): use the last LU factorization as the "
-                      "preconditioner of GMRES, refactorize when GMRES needs more than `max reuse "
-                      "iterations`.");
-    prm.declare_entry("max reuse iterations",
-                      "10",
-                      Patterns::Integer(1),
-                      "GMRES iterations above which an old factorization is replaced.");
-    prm.declare_entry("linear solver tolerance",
-                      "1e-10",
-                      Patterns::Double(0, 1),
-                      "Relative residual ‖b − Ax‖/‖b‖ at which the Krylov solvers stop.");
     prm.declare_entry("max linear iterations",
                       "1000",
                       Patterns::Integer(1),
@@ -159,15 +137,11 @@ namespace FluidSurface
     penalty_factor   = prm.get_double("penalty factor");
     penalty_exponent = prm.get_double("penalty exponent");
     solver = prm.get("linear solver") == "direct" ? LinearSolver::direct : LinearSolver::block_preconditioned;
-    direct_solver_name   = prm.get("direct solver");
     amg_smoother         = prm.get("velocity AMG smoother");
     amg_aggregation_threshold = prm.get_double("velocity AMG aggregation threshold");
     amg_operator = prm.get("velocity AMG operator") == "Q2" ? VelocityAMGOperator::q2 :
                                                               VelocityAMGOperator::low_order_refined;
     amg_node_frames = prm.get_bool("velocity AMG node frames");
-    reuse_factorization  = prm.get_bool("reuse factorization");
-    max_reuse_iterations = prm.get_integer("max reuse iterations");
-    tolerance            = prm.get_double("linear solver tolerance");
     max_iterations       = prm.get_integer("max linear iterations");
     if (!(Re > 0))
       throw_invalid_entry("flow/Re", prm.get("Re"), "a positive Reynolds number");
@@ -179,6 +153,7 @@ namespace FluidSurface
                           "penalty: the multiplier is implemented for `linear solver = direct` only, not for "
                           "block preconditioned");
     prm.leave_subsection();
+    linear_solver.parse_parameters(prm);
   }
 
   void
@@ -224,6 +199,7 @@ namespace FluidSurface
     , fe(flow_elements(FESystem<2, 3>(FE_Q<2, 3>(2), 3), parameters), flow_multiplicities(parameters))
     , lor_fe(flow_elements(FESystem<2, 3>(FE_Q_iso_Q1<2, 3>(2), 3), parameters), flow_multiplicities(parameters))
     , flow_dofs(geometry.triangulation())
+    , linear_solver("Amesos_Klu", parameters.linear_solver) // `direct solver = default` of this scene
   {
     // Sub-cell s = (s_x, s_y) of the reference cell holds the nodes and quadrature points with
     // coordinates in [s_x/2, (s_x+1)/2] × [s_y/2, (s_y+1)/2]; its 4 nodes carry 12 velocity DoFs.
@@ -275,7 +251,7 @@ namespace FluidSurface
               std::string())
         << ", "
         << (parameters.solver == LinearSolver::direct ?
-              parameters.direct_solver_name :
+              linear_solver.direct_solver() :
               std::string("GMRES + block AMG (") +
                 (parameters.amg_operator == VelocityAMGOperator::q2 ? "Q2" : "low-order refined") +
                 (parameters.amg_node_frames ? ", node frames)" : ", Cartesian)"));
@@ -376,8 +352,8 @@ namespace FluidSurface
     older.reinit(owned, relevant, communicator);
     n_steps_done     = 0;
     matrix_assembled = false;
-    factorization.reset();
-    velocity_amg.reset();
+    linear_solver.release();
+    block_preconditioner.clear();
   }
 
   void
@@ -806,25 +782,9 @@ namespace FluidSurface
     // constraints are written.
     if (cartesian || hanging_nodes)
       return Tensor<2, 3>(unit_symmetric_tensor<3>());
-    // Columns t₁, t₂, n with n the exact normal if there is one, else ñ; t₁ ⊥ the axis least aligned with n.
-    const Tensor<1, 3> n = exact_normal ? exact_normal(x) : Tensor<1, 3>(smooth_normal / smooth_normal.norm());
-    unsigned int       axis = 0;
-    for (unsigned int d = 1; d < 3; ++d)
-      if (std::abs(n[d]) < std::abs(n[axis]))
-        axis = d;
-    Tensor<1, 3> e;
-    e[axis]                = 1.0;
-    Tensor<1, 3> t1        = cross_product_3d(e, n);
-    t1                     /= t1.norm();
-    const Tensor<1, 3> t2  = cross_product_3d(n, t1);
-    Tensor<2, 3>       frame;
-    for (unsigned int c = 0; c < 3; ++c)
-      {
-        frame[c][0] = t1[c];
-        frame[c][1] = t2[c];
-        frame[c][2] = n[c];
-      }
-    return frame;
+    // n is the exact normal if there is one, else ñ.
+    return BlockStokesPreconditioner::node_frame(exact_normal ? exact_normal(x) :
+                                                                Tensor<1, 3>(smooth_normal / smooth_normal.norm()));
   }
 
   void
@@ -941,265 +901,79 @@ namespace FluidSurface
 
   // ---------------------------------------------------------------- solvers
 
-  namespace
+  std::vector<BlockStokesPreconditioner::VelocityNode>
+  SurfaceFlow::velocity_nodes() const
   {
-    /**
-     * Block upper-triangular preconditioner of [A Bᵀ; B 0]:
-     * y_p = −S̃⁻¹ r_p, y_u = Ã⁻¹(r_u − Bᵀ y_p), with Ã⁻¹ one AMG V-cycle on A
-     * and S̃⁻¹ = (1/Re) M_p⁻¹ + (α₀/τ) L_p⁻¹ (Cahouet–Chabard), each by one V-cycle.
-     * Vectors are monolithic; Bᵀ y_p is the velocity part of the system matrix times (0, y_p).
-     */
-    class BlockTriangularPreconditioner
-    {
-    public:
-      BlockTriangularPreconditioner(const TrilinosWrappers::SparseMatrix  &system,
-                                    const std::function<void(VectorType &, const VectorType &)> &velocity,
-                                    const TrilinosWrappers::PreconditionAMG &pressure_mass,
-                                    const TrilinosWrappers::PreconditionAMG *pressure_laplace,
-                                    const double                             viscosity,
-                                    const double                             alpha_over_tau,
-                                    const std::vector<IndexSet>             &partitioning,
-                                    const types::global_dof_index            n_u,
-                                    const MPI_Comm                           communicator)
-        : system(system)
-        , velocity(velocity)
-        , pressure_mass(pressure_mass)
-        , pressure_laplace(pressure_laplace)
-        , viscosity(viscosity)
-        , alpha_over_tau(alpha_over_tau)
-        , n_u(n_u)
-        , block_src(partitioning, communicator)
-        , block_dst(partitioning, communicator)
-        , block_tmp(partitioning, communicator)
-      {}
-
-      void
-      vmult(VectorType &dst, const VectorType &src) const
-      {
-        split(src, block_src);
-        pressure_mass.vmult(block_dst.block(1), block_src.block(1));
-        block_dst.block(1) *= -viscosity;
-        if (pressure_laplace)
-          {
-            pressure_laplace->vmult(block_tmp.block(1), block_src.block(1));
-            block_dst.block(1).add(-alpha_over_tau, block_tmp.block(1));
-          }
-        block_tmp.block(0) = 0;
-        block_tmp.block(1) = block_dst.block(1);
-        VectorType monolithic_tmp(dst), monolithic_product(dst);
-        merge(block_tmp, monolithic_tmp);
-        system.vmult(monolithic_product, monolithic_tmp);
-        split(monolithic_product, block_tmp);
-        block_tmp.block(0).sadd(-1.0, 1.0, block_src.block(0));
-        velocity(block_dst.block(0), block_tmp.block(0));
-        merge(block_dst, dst);
-      }
-
-    private:
-      void
-      split(const VectorType &mono, TrilinosWrappers::MPI::BlockVector &blocks) const
-      {
-        for (const types::global_dof_index i : mono.locally_owned_elements())
-          if (i < n_u)
-            blocks.block(0)[i] = mono[i];
-          else
-            blocks.block(1)[i - n_u] = mono[i];
-      }
-      void
-      merge(const TrilinosWrappers::MPI::BlockVector &blocks, VectorType &mono) const
-      {
-        for (const types::global_dof_index i : mono.locally_owned_elements())
-          mono[i] = (i < n_u) ? blocks.block(0)[i] : blocks.block(1)[i - n_u];
-      }
-
-      const TrilinosWrappers::SparseMatrix     &system;
-      const std::function<void(VectorType &, const VectorType &)> velocity;
-      const TrilinosWrappers::PreconditionAMG  &pressure_mass;
-      const TrilinosWrappers::PreconditionAMG  *pressure_laplace;
-      const double                              viscosity;
-      const double                              alpha_over_tau;
-      const types::global_dof_index             n_u;
-      mutable TrilinosWrappers::MPI::BlockVector block_src, block_dst, block_tmp;
-    };
-  } // namespace
+    const IndexSet                                      &owned_velocity = owned_partitioning[0];
+    std::vector<BlockStokesPreconditioner::VelocityNode> nodes;
+    std::vector<bool>                                    listed(owned_velocity.n_elements(), false);
+    const Quadrature<2> support_points(fe.base_element(0).get_unit_support_points());
+    FEValues<2, 3>      node_values(geometry.mapping(),
+                               geometry.fe(),
+                               support_points,
+                               update_values | update_quadrature_points);
+    std::vector<Tensor<1, 3>>            normals(support_points.size());
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    for (const auto &cell : flow_dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(indices);
+          const typename DoFHandler<2, 3>::active_cell_iterator geometry_cell(&geometry.triangulation(),
+                                                                              cell->level(),
+                                                                              cell->index(),
+                                                                              &geometry.dof_handler());
+          node_values.reinit(geometry_cell);
+          node_values[FEValuesExtractors::Vector(0)].get_function_values(geometry.normal_field(), normals);
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            {
+              // A node is listed at the first cell that has its x component.
+              if (fe.system_to_base_index(i).first.first != 0 || fe.system_to_component_index(i).first != 0 ||
+                  !owned_velocity.is_element(indices[i]) || listed[owned_velocity.index_within_set(indices[i])])
+                continue;
+              listed[owned_velocity.index_within_set(indices[i])] = true;
+              BlockStokesPreconditioner::VelocityNode node;
+              bool                                    constrained = false;
+              for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+                if (lor_dof_node[j] == lor_dof_node[i])
+                  {
+                    node.dofs[fe.system_to_component_index(j).first] = owned_velocity.index_within_set(indices[j]);
+                    constrained = constrained || constraints.is_constrained(indices[j]);
+                  }
+              const unsigned int point = fe.system_to_base_index(i).second;
+              node.position            = node_values.quadrature_point(point);
+              node.normal              = normals[point] / normals[point].norm();
+              node.frame = parameters.amg_node_frames ? lor_frame(node.position, normals[point], constrained) :
+                                                        Tensor<2, 3>(unit_symmetric_tensor<3>());
+              nodes.push_back(node);
+            }
+        }
+    return nodes;
+  }
 
   unsigned int
   SurfaceFlow::solve_block_preconditioned(VectorType &x)
   {
-    if (!velocity_amg)
+    if (!block_preconditioner.initialized())
       {
-        // Rigid translations per component (DoFTools::extract_constant_modes has no <2,3> instance).
-        const IndexSet                &owned_velocity = owned_partitioning[0];
-        std::vector<std::vector<bool>> constant_modes(3, std::vector<bool>(owned_velocity.n_elements(), false));
-        std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
-        for (const auto &cell : flow_dofs.active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              cell->get_dof_indices(indices);
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                {
-                  const unsigned int component = fe.system_to_component_index(i).first;
-                  if (component < 3 && owned_velocity.is_element(indices[i]))
-                    constant_modes[component][owned_velocity.index_within_set(indices[i])] = true;
-                }
-            }
-        TrilinosWrappers::PreconditionAMG::AdditionalData velocity_data;
-        velocity_data.constant_modes        = constant_modes;
-        velocity_data.elliptic              = true;
         const bool lor = parameters.amg_operator == VelocityAMGOperator::low_order_refined;
-        const TrilinosWrappers::SparseMatrix &amg_matrix = lor ? lor_velocity_matrix : preconditioner_matrix.block(0, 0);
-        velocity_data.higher_order_elements = !lor;
-        velocity_data.smoother_sweeps       = 2;
-        velocity_data.aggregation_threshold = parameters.amg_aggregation_threshold;
-        velocity_data.smoother_type         = parameters.amg_smoother.c_str();
-        velocity_data.coarse_type           = "Amesos-KLU";
-        velocity_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-        {
-            // Near-null space of the velocity block: smooth tangential fields. Constant vectors are
-            // not (their normal part meets the penalty), so ML gets the tangential projections P e_c
-            // of the translations and of the rotations, P(a × x), at the velocity nodes (ML's
-            // node-wise layout), with the continuous normal ñ.
-            Teuchos::ParameterList              ml_parameters;
-            std::unique_ptr<Epetra_MultiVector> translations;
-            velocity_data.set_parameters(ml_parameters, translations, amg_matrix);
-            const unsigned int n_local = owned_velocity.n_elements();
-            rigid_motions.assign(6 * n_local, 0.0);
-            const Quadrature<2> velocity_nodes(fe.base_element(0).get_unit_support_points());
-            FEValues<2, 3>      node_values(geometry.mapping(),
-                                       geometry.fe(),
-                                       velocity_nodes,
-                                       update_values | update_quadrature_points);
-            std::vector<Tensor<1, 3>> normals(velocity_nodes.size());
-            // Low-order refined: the AMG works in the node frames [t₁ t₂ n] (see local_assemble), so
-            // the modes are given there too: (t₁·m, t₂·m, 0) for the tangential modes m.
-            lor_nodes.clear();
-            const bool        rotated = parameters.amg_node_frames;
-            std::vector<bool> node_listed(rotated ? n_local : 0, false);
-            for (const auto &cell : flow_dofs.active_cell_iterators())
-              if (cell->is_locally_owned())
-                {
-                  cell->get_dof_indices(indices);
-                  const typename DoFHandler<2, 3>::active_cell_iterator geometry_cell(&geometry.triangulation(),
-                                                                                      cell->level(),
-                                                                                      cell->index(),
-                                                                                      &geometry.dof_handler());
-                  node_values.reinit(geometry_cell);
-                  node_values[FEValuesExtractors::Vector(0)].get_function_values(geometry.normal_field(), normals);
-                  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                    {
-                      const auto base = fe.system_to_base_index(i);
-                      if (base.first.first != 0 || !owned_velocity.is_element(indices[i]))
-                        continue;
-                      const unsigned int  node = base.second;
-                      const unsigned int  c    = fe.system_to_component_index(i).first;
-                      const unsigned int  row  = owned_velocity.index_within_set(indices[i]);
-                      const Point<3>     &x    = node_values.quadrature_point(node);
-                      const Tensor<2, 3>  P    = SO::projection(Tensor<1, 3>(normals[node] / normals[node].norm()));
-                      if (rotated)
-                        {
-                          bool constrained = false;
-                          for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
-                            if (lor_dof_node[j] == lor_dof_node[i] && constraints.is_constrained(indices[j]))
-                              constrained = true;
-                          const Tensor<2, 3> frame = lor_frame(x, normals[node], constrained);
-                          for (unsigned int a = 0; a < 3; ++a)
-                            {
-                              Tensor<1, 3> axis, t;
-                              axis[a] = 1.0;
-                              for (unsigned int d = 0; d < 3; ++d)
-                                t[d] = frame[d][c];
-                              rigid_motions[a * n_local + row]       = t * (P * axis);
-                              rigid_motions[(3 + a) * n_local + row] = t * (P * cross_product_3d(axis, x));
-                            }
-                          if (c == 0 && !node_listed[row])
-                            {
-                              node_listed[row] = true;
-                              std::array<types::global_dof_index, 3> node_dofs; // local indices
-                              for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
-                                if (lor_dof_node[j] == lor_dof_node[i])
-                                  node_dofs[fe.system_to_component_index(j).first] =
-                                    owned_velocity.index_within_set(indices[j]);
-                              lor_nodes.emplace_back(node_dofs, frame);
-                            }
-                          continue;
-                        }
-                      for (unsigned int a = 0; a < 3; ++a)
-                        {
-                          Tensor<1, 3> axis;
-                          axis[a]                                = 1.0;
-                          rigid_motions[a * n_local + row]       = (P * axis)[c];
-                          rigid_motions[(3 + a) * n_local + row] = (P * cross_product_3d(axis, x))[c];
-                        }
-                    }
-                }
-            ml_parameters.set("null space: type", "pre-computed");
-            ml_parameters.set("null space: dimension", 6);
-            ml_parameters.set("null space: vectors", rigid_motions.data());
-            ml_parameters.set("PDE equations", 3);
-            if (parameters.amg_smoother == "exact")
-              {
-                velocity_direct = std::make_unique<TrilinosWrappers::SolverDirect>(
-                  direct_control,
-                  TrilinosWrappers::SolverDirect::AdditionalData(false, parameters.direct_solver_name));
-                velocity_direct->initialize(amg_matrix);
-              }
-            else
-              velocity_amg->initialize(amg_matrix, ml_parameters);
-          }
-
-        TrilinosWrappers::PreconditionAMG::AdditionalData pressure_data;
-        pressure_data.elliptic = true;
-        pressure_mass_amg      = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-        pressure_mass_amg->initialize(preconditioner_matrix.block(1, 1), pressure_data);
-        pressure_laplace_amg.reset();
-        if (with_time_derivative)
-          {
-            pressure_laplace_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-            pressure_laplace_amg->initialize(pressure_laplace.block(1, 1), pressure_data);
-          }
+        block_preconditioner.initialize(lor ? lor_velocity_matrix : preconditioner_matrix.block(0, 0),
+                                        velocity_nodes(),
+                                        preconditioner_matrix.block(1, 1),
+                                        with_time_derivative ? &pressure_laplace.block(1, 1) : nullptr,
+                                        {parameters.amg_smoother,
+                                         parameters.amg_aggregation_threshold,
+                                         !lor,
+                                         parameters.amg_node_frames,
+                                         linear_solver.direct_solver()});
       }
     const double alpha0 = with_time_derivative ? bdf_coefficients(parameters.scheme, n_steps_done)[0] : 0.0;
-    std::function<void(VectorType &, const VectorType &)> velocity_inverse;
-    if (parameters.amg_smoother == "exact")
-      velocity_inverse = [this](VectorType &dst, const VectorType &src) { velocity_direct->solve(dst, src); };
-    else
-      velocity_inverse = [this](VectorType &dst, const VectorType &src) { velocity_amg->vmult(dst, src); };
-    if (parameters.amg_node_frames)
-      {
-        // The AMG matrix is written in the node frames: Ã⁻¹ = R Ã_R⁻¹ Rᵀ.
-        const auto rotate = [this](VectorType &v, const bool transpose) {
-          double *values = v.begin(); // the owned entries, in the order of owned_partitioning[0]
-          for (const auto &[dofs, frame] : lor_nodes)
-            {
-              Tensor<1, 3> in, out;
-              for (unsigned int c = 0; c < 3; ++c)
-                in[c] = values[dofs[c]];
-              out = transpose ? in * frame : frame * in; // in * frame = frameᵀ in
-              for (unsigned int c = 0; c < 3; ++c)
-                values[dofs[c]] = out[c];
-            }
-        };
-        velocity_inverse = [inner = velocity_inverse, rotate](VectorType &dst, const VectorType &src) {
-          VectorType rotated(src);
-          rotate(rotated, true);
-          inner(dst, rotated);
-          rotate(dst, false);
-        };
-      }
-    const BlockTriangularPreconditioner preconditioner(system_matrix,
-                                                       velocity_inverse,
-                                                       *pressure_mass_amg,
-                                                       pressure_laplace_amg.get(),
-                                                       1.0 / parameters.Re,
-                                                       with_time_derivative ? alpha0 / current_tau : 0.0,
-                                                       owned_partitioning,
-                                                       n_u,
-                                                       communicator);
-    SolverControl control(parameters.max_iterations, parameters.tolerance * system_rhs.l2_norm());
-    SolverGMRES<VectorType>::AdditionalData gmres_data(100, true);
-    SolverGMRES<VectorType> gmres(control, gmres_data);
-    gmres.solve(system_matrix, x, system_rhs, preconditioner);
-    return control.last_step();
+    return block_preconditioner.solve(system_matrix,
+                                      x,
+                                      system_rhs,
+                                      1.0 / parameters.Re,
+                                      with_time_derivative ? alpha0 / current_tau : 0.0,
+                                      linear_solver.get_parameters().tolerance,
+                                      parameters.max_iterations);
   }
 
   SurfaceFlow::SolveInfo
@@ -1213,41 +987,23 @@ namespace FluidSurface
       {
         // The preconditioner blocks (A without convection, M_p, L_p) change only with τ and α₀.
         if (coefficients_changed)
-          velocity_amg.reset();
-        info.factorized = !velocity_amg;
+          block_preconditioner.clear();
+        info.factorized = !block_preconditioner.initialized();
         info.iterations = solve_block_preconditioned(x);
       }
     else
       {
-        bool solved = false;
-        if (matrix_changed && !coefficients_changed && factorization && parameters.reuse_factorization)
-          {
-            // The factorization of a nearby matrix (older convection velocity) preconditions GMRES.
-            SolverControl control(parameters.max_reuse_iterations, parameters.tolerance * system_rhs.l2_norm());
-            SolverGMRES<VectorType> gmres(control, SolverGMRES<VectorType>::AdditionalData(50, true));
-            try
-              {
-                gmres.solve(system_matrix, x, system_rhs, FactorizationPreconditioner(*factorization));
-                info.iterations = control.last_step();
-                solved          = true;
-              }
-            catch (const SolverControl::NoConvergence &)
-              {
-                x = current;
-              }
-          }
-        if (!solved)
-          {
-            if (matrix_changed || !factorization)
-              {
-                factorization = std::make_unique<TrilinosWrappers::SolverDirect>(
-                  direct_control,
-                  TrilinosWrappers::SolverDirect::AdditionalData(false, parameters.direct_solver_name));
-                factorization->initialize(system_matrix);
-                info.factorized = true;
-              }
-            factorization->solve(x, system_rhs);
-          }
+        // The factorization of a matrix with an older convection velocity preconditions GMRES; one with
+        // another τ or α₀ is replaced at once.
+        if (coefficients_changed)
+          linear_solver.request_factorization();
+        if (matrix_changed)
+          linear_solver.matrix_changed();
+        FactorizationPreconditioner                   preconditioner;
+        const ReusedFactorizationSolver::Result result =
+          linear_solver.solve(system_matrix, system_matrix, x, system_rhs, preconditioner);
+        info.iterations = result.iterations;
+        info.factorized = result.factorized;
       }
     constraints.distribute(x);
     current         = x;
@@ -1278,7 +1034,7 @@ namespace FluidSurface
     assembled_alpha0                  = alpha0;
     // The preconditioner matrices (A without convection, M_p, L_p) change only with τ and α₀; they are
     // assembled only when the AMG hierarchies are rebuilt.
-    preconditioner_outdated = coefficients_changed || !velocity_amg;
+    preconditioner_outdated = coefficients_changed || !block_preconditioner.initialized();
     Timer timer;
     assemble(time, tau, matrix_changed);
     const double assemble_time = timer.wall_time();

@@ -13,12 +13,25 @@ namespace FluidSurface
     , columns(columns)
     , rows(rows)
   {
+    AssertDimension(matrix.m(), matrix.n());
     AssertDimension(columns.size(), rows.size());
+    Assert(columns.size() < matrix.m(), ExcMessage("more constraints than unknowns"));
+    for (unsigned int k = 0; k < columns.size(); ++k)
+      {
+        Assert(columns[k] != nullptr && rows[k] != nullptr, ExcInternalError());
+        AssertDimension(columns[k]->size(), matrix.m());
+        AssertDimension(rows[k]->size(), matrix.n());
+        Assert(columns[k]->locally_owned_elements() == matrix.locally_owned_range_indices(),
+               ExcMessage("a column of the bordered system is not partitioned like the rows of the matrix"));
+        Assert(rows[k]->locally_owned_elements() == matrix.locally_owned_range_indices(),
+               ExcMessage("a row of the bordered system is not partitioned like the rows of the matrix"));
+      }
   }
 
   BorderedSystem::BlockVector
   BorderedSystem::make_vector(const Vector &state) const
   {
+    AssertDimension(state.size(), matrix.n());
     const MPI_Comm comm = state.get_mpi_communicator();
     IndexSet       owned_multipliers(columns.size());
     if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -31,6 +44,7 @@ namespace FluidSurface
   std::vector<double>
   BorderedSystem::multipliers(const BlockVector &v)
   {
+    AssertDimension(v.n_blocks(), 2);
     std::vector<double> values(v.block(1).size(), 0.0);
     for (const auto i : v.block(1).locally_owned_elements())
       values[i] = v.block(1)(i);
@@ -42,6 +56,7 @@ namespace FluidSurface
   void
   BorderedSystem::set_multipliers(BlockVector &v, const std::vector<double> &values)
   {
+    AssertDimension(v.n_blocks(), 2);
     AssertDimension(values.size(), v.block(1).size());
     for (const auto i : v.block(1).locally_owned_elements())
       v.block(1)(i) = values[i];
@@ -51,6 +66,7 @@ namespace FluidSurface
   std::vector<double>
   BorderedSystem::constraint_values(const Vector &x) const
   {
+    AssertDimension(x.size(), matrix.n());
     std::vector<double> values(rows.size());
     for (unsigned int j = 0; j < rows.size(); ++j)
       values[j] = (*rows[j]) * x;
@@ -60,6 +76,9 @@ namespace FluidSurface
   void
   BorderedSystem::vmult(BlockVector &dst, const BlockVector &src) const
   {
+    AssertDimension(src.n_blocks(), 2);
+    AssertDimension(src.block(1).size(), columns.size());
+    AssertDimension(dst.block(1).size(), rows.size());
     matrix.vmult(dst.block(0), src.block(0));
     const std::vector<double> mu = multipliers(src);
     for (unsigned int k = 0; k < columns.size(); ++k)
@@ -67,19 +86,21 @@ namespace FluidSurface
     set_multipliers(dst, constraint_values(src.block(0)));
   }
 
-  BorderedFactorizationPreconditioner::BorderedFactorizationPreconditioner(
-    TrilinosWrappers::SolverDirect &factorization,
-    const BorderedSystem           &system)
-    : factorization(factorization)
-    , system(system)
-    , z(system.columns.size())
-    , schur_inverse(system.columns.size(), system.columns.size())
+  BorderedFactorizationPreconditioner::BorderedFactorizationPreconditioner(const BorderedSystem &system)
+    : system(system)
+  {}
+
+  void
+  BorderedFactorizationPreconditioner::initialize(TrilinosWrappers::SolverDirect &factors)
   {
+    factorization      = &factors;
     const unsigned int n = system.columns.size();
+    z.resize(n);
+    schur_inverse.reinit(n, n);
     for (unsigned int k = 0; k < n; ++k)
       {
         z[k].reinit(*system.columns[k], true);
-        factorization.solve(z[k], *system.columns[k]);
+        factorization->solve(z[k], *system.columns[k]);
       }
     for (unsigned int j = 0; j < n; ++j)
       for (unsigned int k = 0; k < n; ++k)
@@ -92,7 +113,9 @@ namespace FluidSurface
   BorderedFactorizationPreconditioner::schur_solve(const BorderedSystem::Vector &x,
                                                    const std::vector<double>    &g) const
   {
-    const unsigned int  n        = z.size();
+    const unsigned int n = z.size();
+    Assert(factorization != nullptr, ExcNotInitialized());
+    AssertDimension(g.size(), n);
     std::vector<double> residual = system.constraint_values(x), mu(n, 0.0);
     for (unsigned int j = 0; j < n; ++j)
       residual[j] -= g[j];
@@ -106,7 +129,8 @@ namespace FluidSurface
   BorderedFactorizationPreconditioner::vmult(BorderedSystem::BlockVector       &dst,
                                              const BorderedSystem::BlockVector &src) const
   {
-    factorization.solve(dst.block(0), src.block(0));
+    Assert(factorization != nullptr, ExcNotInitialized());
+    factorization->solve(dst.block(0), src.block(0));
     const std::vector<double> mu = schur_solve(dst.block(0), BorderedSystem::multipliers(src));
     for (unsigned int k = 0; k < z.size(); ++k)
       dst.block(0).add(-mu[k], z[k]);

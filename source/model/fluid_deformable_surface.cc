@@ -6,7 +6,6 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/data_postprocessor.h>
 #include <deal.II/numerics/vector_tools.h>
@@ -124,6 +123,7 @@ namespace FluidSurface
     : geometry(geometry)
     , rotation_axis({0., 0., 1.})
     , dofs(geometry.triangulation())
+    , linear_solver("Amesos_Mumps") // `direct solver = default` of this scene
   {}
 
   void
@@ -187,6 +187,7 @@ namespace FluidSurface
     bending.parse_parameters(prm);
     volume_constraint.parse_parameters(prm);
     redistribution.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
     prm.enter_subsection("volume constraint");
     drift_correction_time = prm.get_double("drift correction time");
     prm.leave_subsection();
@@ -198,9 +199,6 @@ namespace FluidSurface
     flow.inertia         = prm.get_bool("inertia");
     flow.convection      = prm.get_bool("convection") && flow.inertia;
     flow.conserve_momenta = prm.get_bool("conserve momenta") && flow.inertia;
-    linear_solver.reuse_factorization       = prm.get_bool("reuse factorization");
-    linear_solver.refactorization_threshold = prm.get_integer("max reuse iterations");
-    linear_solver.tolerance                 = prm.get_double("linear solver tolerance");
     stokes_regularization                   = prm.get_double("rigid motion regularization");
     if (!flow.inertia && !(stokes_regularization > 0))
       throw_invalid_entry("flow/rigid motion regularization",
@@ -358,8 +356,7 @@ namespace FluidSurface
       column.reinit(owned, geometry.get_communicator());
     for (auto &row : rigid_rows)
       row.reinit(owned, geometry.get_communicator());
-    factorization.reset();
-    refactorize_next = true;
+    linear_solver.release();
     current.reinit(owned, relevant, geometry.get_communicator());
     candidate.reinit(owned, relevant, geometry.get_communicator());
 
@@ -775,40 +772,18 @@ namespace FluidSurface
         }
   }
 
-  void
-  FluidDeformableSurface::factorize()
-  {
-    TimerSection section(step_timer, "factorization");
-    factorization = std::make_unique<TrilinosWrappers::SolverDirect>(
-      factorization_control, TrilinosWrappers::SolverDirect::AdditionalData(false, direct_solver));
-    factorization->initialize(system_matrix);
-    factorization_current = true;
-    refactorize_next      = false;
-    ++factorization_count;
-  }
-
-  unsigned int
-  FluidDeformableSurface::solve_system(const BorderedSystem        &system,
-                                       BorderedSystem::BlockVector &x,
+  ReusedFactorizationSolver::Result
+  FluidDeformableSurface::solve_system(const BorderedSystem              &system,
+                                       BorderedSystem::BlockVector       &x,
                                        const BorderedSystem::BlockVector &b)
   {
-    TimerSection                              section(step_timer, "linear solve");
-    const BorderedFactorizationPreconditioner preconditioner(*factorization, system);
-    unsigned int                              iterations = 0;
-    if (factorization_current)
-      preconditioner.vmult(x, b);
-    else
-      {
-        // Right preconditioning: GMRES measures the true residual ‖b − Kx‖.
-        SolverControl control(linear_solver.refactorization_threshold, linear_solver.tolerance * b.l2_norm());
-        SolverGMRES<BorderedSystem::BlockVector>::AdditionalData data(linear_solver.refactorization_threshold + 2,
-                                                                      true);
-        SolverGMRES<BorderedSystem::BlockVector> gmres(control, data);
-        gmres.solve(system, x, b, preconditioner);
-        iterations = control.last_step();
-      }
+    linear_solver.matrix_changed(); // every step assembles its matrix on the new surface
+    BorderedFactorizationPreconditioner     preconditioner(system);
+    const ReusedFactorizationSolver::Result result =
+      linear_solver.solve(system_matrix, system, x, b, preconditioner);
+    TimerSection section(step_timer, "linear solve");
     preconditioner.enforce_constraints(x, BorderedSystem::multipliers(b));
-    return iterations;
+    return result;
   }
 
   Tensor<1, 3>
@@ -939,31 +914,20 @@ namespace FluidSurface
           }
       }
 
+    AssertDimension(columns.size(), (volume_constraint.enabled ? 1 : 0) + (rigid_constraints() ? 6 : 0));
+    AssertDimension(rates.size(), columns.size());
     const BorderedSystem system(system_matrix, columns, rows);
     BorderedSystem::BlockVector solution = system.make_vector(system_rhs), rhs = solution;
     rhs.block(0) = system_rhs;
     BorderedSystem::set_multipliers(rhs, rates);
     try
       {
-        factorization_current = false;
-        if (!factorization || !linear_solver.reuse_factorization || refactorize_next)
-          factorize();
         if (last_solution.n_blocks() == 2 && last_solution.block(1).size() == columns.size())
           solution = last_solution;
-        // An old factorization preconditions GMRES on the bordered system; when GMRES needs more than the
-        // threshold, this step's matrix is factorized and the system solved directly.
-        try
-          {
-            result.linear_iterations += solve_system(system, solution, rhs);
-          }
-        catch (const SolverControl::NoConvergence &)
-          {
-            result.linear_iterations += linear_solver.refactorization_threshold;
-            factorize();
-            solve_system(system, solution, rhs);
-          }
-        last_solution = solution;
-        result.factorized = factorization_current;
+        const ReusedFactorizationSolver::Result solve = solve_system(system, solution, rhs);
+        result.linear_iterations                      = solve.iterations;
+        result.factorized                             = solve.factorized;
+        last_solution                                 = solution;
         const std::vector<double> mu          = BorderedSystem::multipliers(solution);
         const unsigned int        first_rigid = volume_constraint.enabled ? 1 : 0;
         if (volume_constraint.enabled)
@@ -975,8 +939,8 @@ namespace FluidSurface
       }
     catch (const std::exception &exc)
       {
-        refactorize_next = true;
-        result.failure   = std::string("linear solver failed: ") + exc.what();
+        linear_solver.request_factorization();
+        result.failure = std::string("linear solver failed: ") + exc.what();
         return result;
       }
     VectorType &x1 = solution.block(0);
@@ -1013,7 +977,7 @@ namespace FluidSurface
     position = current_position;
     geometry.set_position(position);
     geometry.compute_curvature();
-    refactorize_next = true;
+    linear_solver.request_factorization();
   }
 
   double
@@ -1082,7 +1046,7 @@ namespace FluidSurface
     data.set("model/element", fe->get_name());
     data.set("model/target volume", target_volume);
     data.set("model/target area", target_area);
-    data.set("model/factorizations", factorization_count);
+    data.set("model/factorizations", linear_solver.n_factorizations());
     for (unsigned int k = 0; k < rigid_targets.size(); ++k)
       data.set("model/rigid target " + std::to_string(k), rigid_targets[k]);
     data.set("model/last tau", last_tau);
@@ -1109,7 +1073,7 @@ namespace FluidSurface
     old_position  = previous;
     target_volume = data.get_double("model/target volume");
     target_area   = data.get_double("model/target area");
-    factorization_count = data.get_unsigned("model/factorizations");
+    linear_solver.set_n_factorizations(data.get_unsigned("model/factorizations"));
     for (unsigned int k = 0; k < rigid_targets.size(); ++k)
       rigid_targets[k] = data.get_double("model/rigid target " + std::to_string(k));
     last_tau      = data.get_double("model/last tau");

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/linear_algebra/reused_factorization_solver.h>
 #include <fluid_surface/scenes/simulation.h>
 
 #include <csignal>
@@ -37,6 +38,7 @@ namespace FluidSurface
                       "redistribution) on the moving surface.");
     prm.leave_subsection();
     SurfaceFlow::declare_parameters(prm);
+    ReusedFactorizationSolver::declare_parameters(prm);
     FixedSurfaceScene::declare_parameters(prm);
     SurfaceGeometry::declare_parameters(prm);
     OutputWriter::declare_parameters(prm);

@@ -17,6 +17,8 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <fluid_surface/io/output_writer.h>
+#include <fluid_surface/linear_algebra/block_stokes_preconditioner.h>
+#include <fluid_surface/linear_algebra/reused_factorization_solver.h>
 #include <fluid_surface/io/statistics_file.h>
 #include <fluid_surface/geometry/surface_geometry.h>
 
@@ -126,15 +128,13 @@ namespace FluidSurface
       double        penalty_factor       = 10.0; ///< β of η = β h^{−q}
       double        penalty_exponent     = 3.0;  ///< q of η = β h^{−q}
       LinearSolver  solver               = LinearSolver::direct;
-      std::string   direct_solver_name   = "Amesos_Klu";
       std::string   amg_smoother         = "symmetric block Gauss-Seidel"; ///< ML smoother of the velocity AMG
       double        amg_aggregation_threshold = 1e-4; ///< ML aggregation threshold of the velocity AMG
       VelocityAMGOperator amg_operator = VelocityAMGOperator::q2; ///< matrix of the velocity AMG
       bool          amg_node_frames      = true; ///< velocity AMG in node frames [t₁ t₂ n]
-      bool          reuse_factorization  = true;
-      unsigned int  max_reuse_iterations = 10;
-      double        tolerance            = 1e-10; ///< relative residual of Krylov solves
       unsigned int  max_iterations       = 1000;
+      /// `subsection linear solver`: the direct solver and the tolerance of both solvers.
+      ReusedFactorizationSolver::Parameters linear_solver;
 
       static void
       declare(dealii::ParameterHandler &prm);
@@ -255,6 +255,9 @@ namespace FluidSurface
     /// identity at a @p cartesian (constrained) node and on meshes with hanging nodes.
     dealii::Tensor<2, 3>
     lor_frame(const dealii::Point<3> &x, const dealii::Tensor<1, 3> &smooth_normal, const bool cartesian) const;
+    /// The owned velocity nodes with their positions, normals ñ/|ñ| and frames, for the velocity AMG.
+    std::vector<BlockStokesPreconditioner::VelocityNode>
+    velocity_nodes() const;
     void
     remove_killing_components_from_rhs();
     /// The constraints fixing the Killing fields at one node per axis (direct solver).
@@ -262,6 +265,7 @@ namespace FluidSurface
     pin_killing_fields();
     SolveInfo
     solve(const bool matrix_changed, const bool coefficients_changed);
+    /// GMRES with the block preconditioner, whose AMG hierarchies are built if they are not.
     unsigned int
     solve_block_preconditioned(VectorType &x);
 
@@ -285,9 +289,6 @@ namespace FluidSurface
     std::vector<std::vector<unsigned int>> lor_subcell_dofs, lor_subcell_points;
     std::vector<unsigned int>              lor_dof_node; ///< local velocity DoF → its node (0–8) in the cell
     bool hanging_nodes = false; ///< the mesh has hanging nodes (node frames are then Cartesian)
-    /// Owned velocity nodes (the local indices of their x, y, z DoFs in the velocity block) and their
-    /// frames [t₁ t₂ n], for the velocity AMG in node frames.
-    std::vector<std::pair<std::array<dealii::types::global_dof_index, 3>, dealii::Tensor<2, 3>>> lor_nodes;
     dealii::DoFHandler<2, 3>          flow_dofs;
     dealii::types::global_dof_index   n_u = 0, n_p = 0;
     dealii::IndexSet                  owned, relevant;
@@ -308,14 +309,10 @@ namespace FluidSurface
     double                                      assembled_tau          = 0; ///< τ of the assembled matrix
     double                                      assembled_alpha0       = 0; ///< α₀ of the assembled matrix
 
-    // What the last solve leaves for the next one.
-    dealii::SolverControl                                          direct_control;
-    std::unique_ptr<dealii::TrilinosWrappers::SolverDirect>        factorization;
-    std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG>     velocity_amg;
-    std::unique_ptr<dealii::TrilinosWrappers::SolverDirect>        velocity_direct;
-    std::vector<double> rigid_motions; ///< ML null space of the velocity block (6 modes, node-wise)
-    std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG>     pressure_mass_amg;
-    std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG>     pressure_laplace_amg;
+    // What the last solve leaves for the next one: the kept factorization (`linear solver = direct`) or
+    // the AMG hierarchies (block preconditioned).
+    ReusedFactorizationSolver                                      linear_solver;
+    BlockStokesPreconditioner                                      block_preconditioner;
     bool                                                           matrix_assembled = false;
     bool preconditioner_outdated = true; ///< the next assembly must build the preconditioner matrices
   };

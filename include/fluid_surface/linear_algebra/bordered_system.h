@@ -18,7 +18,8 @@ namespace FluidSurface
    * @f[ K \begin{pmatrix} x \\ \mu \end{pmatrix} =
    *     \begin{pmatrix} A x + \sum_k \mu_k c_k \\ (r_j \cdot x)_j \end{pmatrix}, @f]
    * with columns c_k (the forces of the multipliers) and rows r_j (the constraints), which may differ.
-   * Block 0 of a vector is the state, block 1 the multipliers, all owned by the first rank.
+   * Block 0 of a vector is the state, block 1 the multipliers, all owned by the first rank. A is square,
+   * and there are as many rows as columns, each partitioned like the rows of A, and fewer than A has.
    */
   class BorderedSystem
   {
@@ -65,8 +66,12 @@ namespace FluidSurface
   class BorderedFactorizationPreconditioner
   {
   public:
-    BorderedFactorizationPreconditioner(dealii::TrilinosWrappers::SolverDirect &factorization,
-                                        const BorderedSystem                   &system);
+    /// A preconditioner of @p system; initialize() gives it the factors.
+    explicit BorderedFactorizationPreconditioner(const BorderedSystem &system);
+
+    /// Uses the factors of A₀ (kept by the caller): Z = A₀⁻¹ C and S⁻¹.
+    void
+    initialize(dealii::TrilinosWrappers::SolverDirect &factorization);
 
     /// dst = K₀⁻¹ src: y = A₀⁻¹ r, μ = S⁻¹(Rᵀy − s), x = y − Zμ.
     void
@@ -84,7 +89,7 @@ namespace FluidSurface
     std::vector<double>
     schur_solve(const BorderedSystem::Vector &x, const std::vector<double> &g) const;
 
-    dealii::TrilinosWrappers::SolverDirect &factorization;
+    dealii::TrilinosWrappers::SolverDirect *factorization = nullptr;
     const BorderedSystem                   &system;
     std::vector<BorderedSystem::Vector>     z;
     dealii::FullMatrix<double>              schur_inverse;

@@ -1,6 +1,7 @@
 #ifndef fluid_surface_linear_algebra_factorization_preconditioner_h
 #define fluid_surface_linear_algebra_factorization_preconditioner_h
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/lac/trilinos_solver.h>
 
 namespace FluidSurface
@@ -12,20 +13,24 @@ namespace FluidSurface
   class FactorizationPreconditioner
   {
   public:
-    explicit FactorizationPreconditioner(dealii::TrilinosWrappers::SolverDirect &lu)
-      : lu(lu)
-    {}
+    /// Uses the factors @p lu (kept by the caller).
+    void
+    initialize(dealii::TrilinosWrappers::SolverDirect &lu)
+    {
+      factors = &lu;
+    }
 
     /// dst = LU⁻¹ src.
     template <typename Vector>
     void
     vmult(Vector &dst, const Vector &src) const
     {
-      lu.solve(dst, src);
+      Assert(factors != nullptr, dealii::ExcNotInitialized());
+      factors->solve(dst, src);
     }
 
   private:
-    dealii::TrilinosWrappers::SolverDirect &lu;
+    dealii::TrilinosWrappers::SolverDirect *factors = nullptr;
   };
 } // namespace FluidSurface
 

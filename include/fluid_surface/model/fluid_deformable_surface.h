@@ -13,6 +13,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <fluid_surface/linear_algebra/bordered_system.h>
+#include <fluid_surface/linear_algebra/reused_factorization_solver.h>
 #include <fluid_surface/geometry/surface_geometry.h>
 
 #include <array>
@@ -91,20 +92,6 @@ namespace FluidSurface
     bool   inertia         = true; ///< ∂_t u (the Stokes limit drops it)
     bool   convection      = true; ///< ∇_w u with w = u − ∂_t X
     bool   conserve_momenta = false; ///< multipliers keep ∫u = P₀ and ∫x × u = L₀ (with inertia)
-  };
-
-  /**
-   * How the linear system of a step is solved: a sparse LU factorization
-   * (Amesos MUMPS), reused over the following steps as the right
-   * preconditioner of GMRES on their (slightly different) matrices. The
-   * matrix is factorized again when a GMRES solve needs more than
-   * `refactorization threshold` iterations, fails, or after a rejected step.
-   */
-  struct LinearSolverParameters
-  {
-    bool         reuse_factorization       = true;
-    unsigned int refactorization_threshold = 10;    ///< GMRES iterations per solve
-    double       tolerance                 = 1e-10; ///< relative residual of a GMRES solve
   };
 
   /**
@@ -207,19 +194,19 @@ namespace FluidSurface
     set_timer(dealii::TimerOutput &timer)
     {
       step_timer = &timer;
+      linear_solver.set_timer(&timer);
     }
     /// Number of LU factorizations so far.
     unsigned int
     n_factorizations() const
     {
-      return factorization_count;
+      return linear_solver.n_factorizations();
     }
     /// Frees the kept LU factorization (MUMPS) while the rest of the program is still alive.
     void
     release_factorization()
     {
-      factorization.reset();
-      refactorize_next = true;
+      linear_solver.release();
     }
     /// Whether ∂_t u is assembled (false: the Stokes limit, whose energy F is the bending energy alone).
     bool
@@ -292,16 +279,12 @@ namespace FluidSurface
     /// (2/Re)‖σ(u)‖² of @p state on the current surface.
     double
     dissipation_rate(const VectorType &state) const;
-    /// Factorizes system_matrix (Amesos MUMPS keeps its own copy of the factors).
-    void
-    factorize();
     /**
-     * Solves the bordered system K x = b (the step's matrix with its global constraints) with the current
-     * factorization: directly if it is of this step's matrix, otherwise by GMRES from the initial guess x,
-     * preconditioned by the bordered factorization; then makes the constraints hold to round-off. Returns
-     * the GMRES iterations; throws SolverControl::NoConvergence when GMRES fails.
+     * Solves the bordered system K x = b (the step's matrix with its global constraints) with the kept
+     * factorization, by GMRES from the initial guess x preconditioned by the bordered factorization
+     * (ReusedFactorizationSolver); then makes the constraints hold to round-off.
      */
-    unsigned int
+    ReusedFactorizationSolver::Result
     solve_system(const BorderedSystem &system, BorderedSystem::BlockVector &x, const BorderedSystem::BlockVector &b);
 
     SurfaceGeometry &geometry;
@@ -337,18 +320,13 @@ namespace FluidSurface
     std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>> position_pairs;
     double                                 last_tau = 0;     ///< τ of the step that produced X^m
     double                                 last_step_tau = 0; ///< τ of the last advance()
-    std::string                            direct_solver = "Amesos_Mumps";
     double                                 target_volume = 0;
     double                                 target_area   = 0;
     bool                                   area_correction = true;
     double                                 drift_correction_time = 0.01;
 
-    LinearSolverParameters                          linear_solver;
-    dealii::SolverControl                           factorization_control;
-    std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> factorization;
-    bool                                            factorization_current = false; ///< of this step's matrix
-    bool                                            refactorize_next      = true;
-    unsigned int                                    factorization_count   = 0;
+    /// The step's LU factorization, kept across steps (`subsection linear solver`).
+    ReusedFactorizationSolver                       linear_solver;
     dealii::TimerOutput                            *step_timer            = nullptr;
     /// Stokes limit: ε of the regularization ε(u, v) and the columns (r_k, v) of the rigid motions
     /// r = e_1, e_2, e_3, e_1 × x, e_2 × x, e_3 × x, whose multipliers enforce ∫u = 0, ∫x × u = 0.

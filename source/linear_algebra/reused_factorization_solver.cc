@@ -1,0 +1,188 @@
+#include <deal.II/base/patterns.h>
+#include <deal.II/lac/solver_gmres.h>
+
+#include <fluid_surface/linear_algebra/bordered_system.h>
+#include <fluid_surface/linear_algebra/factorization_preconditioner.h>
+#include <fluid_surface/linear_algebra/reused_factorization_solver.h>
+
+#include <optional>
+
+namespace FluidSurface
+{
+  using namespace dealii;
+
+  void
+  ReusedFactorizationSolver::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    const Parameters defaults;
+    prm.enter_subsection("linear solver");
+    prm.declare_entry("reuse factorization",
+                      Patterns::Tools::to_string(defaults.reuse_factorization),
+                      Patterns::Bool(),
+                      "Keep the last LU factorization and use it as the right preconditioner of GMRES on the "
+                      "matrices of the following steps (scene full: every step; scene fixed surface with "
+                      "linear solver = direct: with convection) until GMRES needs more than `max reuse "
+                      "iterations`; false: factorize every new matrix.");
+    prm.declare_entry("max reuse iterations",
+                      Patterns::Tools::to_string(defaults.max_reuse_iterations),
+                      Patterns::Integer(1),
+                      "GMRES iterations above which a solve with the kept factorization is abandoned: the "
+                      "step's matrix is factorized and the system solved directly. A rejected step or a "
+                      "failed solve also makes the next solve factorize.");
+    prm.declare_entry("tolerance",
+                      Patterns::Tools::to_string(defaults.tolerance),
+                      Patterns::Double(0, 1),
+                      "Relative residual ‖b − Kx‖/‖b‖ (true residual) at which GMRES stops; also the "
+                      "tolerance of the block-preconditioned solver of scene fixed surface.");
+    prm.declare_entry("direct solver",
+                      defaults.direct_solver,
+                      Patterns::Selection("default|Amesos_Klu|Amesos_Mumps"),
+                      "Amesos package of the LU factorizations. default: Amesos_Mumps in scene full, "
+                      "Amesos_Klu in scene fixed surface.");
+    prm.leave_subsection();
+  }
+
+  void
+  ReusedFactorizationSolver::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("linear solver");
+    reuse_factorization  = prm.get_bool("reuse factorization");
+    max_reuse_iterations = prm.get_integer("max reuse iterations");
+    tolerance            = prm.get_double("tolerance");
+    direct_solver        = prm.get("direct solver");
+    prm.leave_subsection();
+  }
+
+  ReusedFactorizationSolver::ReusedFactorizationSolver(const std::string &scene_direct_solver,
+                                                       const Parameters  &parameters)
+    : parameters(parameters)
+    , scene_direct_solver(scene_direct_solver)
+  {}
+
+  ReusedFactorizationSolver::ReusedFactorizationSolver(const std::string &scene_direct_solver)
+    : ReusedFactorizationSolver(scene_direct_solver, Parameters())
+  {}
+
+  void
+  ReusedFactorizationSolver::parse_parameters(ParameterHandler &prm)
+  {
+    Parameters new_parameters;
+    new_parameters.parse_parameters(prm);
+    set_parameters(new_parameters);
+  }
+
+  void
+  ReusedFactorizationSolver::set_parameters(const Parameters &new_parameters)
+  {
+    parameters = new_parameters;
+    release();
+  }
+
+  std::string
+  ReusedFactorizationSolver::direct_solver() const
+  {
+    return parameters.direct_solver == "default" ? scene_direct_solver : parameters.direct_solver;
+  }
+
+  void
+  ReusedFactorizationSolver::release()
+  {
+    factorization.reset();
+    factorization_requested = true;
+  }
+
+  void
+  ReusedFactorizationSolver::factorize(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    std::optional<TimerOutput::Scope> section;
+    if (step_timer)
+      section.emplace(*step_timer, "factorization");
+    factorization = std::make_unique<TrilinosWrappers::SolverDirect>(
+      factorization_control, TrilinosWrappers::SolverDirect::AdditionalData(false, direct_solver()));
+    factorization->initialize(matrix);
+    factors_of_current_matrix = true;
+    factorization_requested   = false;
+    ++factorization_count;
+  }
+
+  template <typename SystemType, typename VectorType, typename PreconditionerType>
+  bool
+  ReusedFactorizationSolver::solve_with_kept_factors(const SystemType   &system,
+                                                     VectorType         &x,
+                                                     const VectorType   &b,
+                                                     PreconditionerType &preconditioner,
+                                                     unsigned int       &iterations)
+  {
+    std::optional<TimerOutput::Scope> section;
+    if (step_timer)
+      section.emplace(*step_timer, "linear solve");
+    preconditioner.initialize(*factorization);
+    // Right preconditioning: GMRES measures the true residual ‖b − Kx‖. A basis of max_reuse_iterations
+    // vectors: the solve is abandoned before GMRES would restart.
+    SolverControl control(parameters.max_reuse_iterations, parameters.tolerance * b.l2_norm());
+    typename SolverGMRES<VectorType>::AdditionalData data(parameters.max_reuse_iterations + 2, true);
+    SolverGMRES<VectorType>                          gmres(control, data);
+    try
+      {
+        gmres.solve(system, x, b, preconditioner);
+        iterations = control.last_step();
+        return true;
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        iterations = parameters.max_reuse_iterations;
+        return false;
+      }
+  }
+
+  template <typename SystemType, typename VectorType, typename PreconditionerType>
+  ReusedFactorizationSolver::Result
+  ReusedFactorizationSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
+                                   const SystemType                     &system,
+                                   VectorType                           &x,
+                                   const VectorType                     &b,
+                                   PreconditionerType                   &preconditioner)
+  {
+    Result result;
+    try
+      {
+        if (!factorization || factorization_requested ||
+            (!parameters.reuse_factorization && !factors_of_current_matrix))
+          {
+            factorize(matrix);
+            result.factorized = true;
+          }
+        if (!factors_of_current_matrix)
+          {
+            if (solve_with_kept_factors(system, x, b, preconditioner, result.iterations))
+              return result;
+            factorize(matrix);
+            result.factorized = true;
+          }
+        std::optional<TimerOutput::Scope> section;
+        if (step_timer)
+          section.emplace(*step_timer, "linear solve");
+        preconditioner.initialize(*factorization);
+        preconditioner.vmult(x, b);
+      }
+    catch (const std::exception &)
+      {
+        factorization_requested = true;
+        throw;
+      }
+    return result;
+  }
+
+  template ReusedFactorizationSolver::Result
+  ReusedFactorizationSolver::solve(const TrilinosWrappers::SparseMatrix &,
+                                   const TrilinosWrappers::SparseMatrix &,
+                                   TrilinosWrappers::MPI::Vector &,
+                                   const TrilinosWrappers::MPI::Vector &,
+                                   FactorizationPreconditioner &);
+  template ReusedFactorizationSolver::Result
+  ReusedFactorizationSolver::solve(const TrilinosWrappers::SparseMatrix &,
+                                   const BorderedSystem &,
+                                   BorderedSystem::BlockVector &,
+                                   const BorderedSystem::BlockVector &,
+                                   BorderedFactorizationPreconditioner &);
+} // namespace FluidSurface
