@@ -1,12 +1,12 @@
-// Shared by the checkpoint_* tests: runs scene full in-process (the rotating prolate of
-// full_rotation.prm, refinement 2, adaptive τ, t ∈ [0, 0.06]: 6 steps) with prm overrides, captures the screen,
+// Shared by the checkpoint_* tests: runs scene full in-process through run_simulation (main's exit statuses and
+// messages; the rotating prolate of full_rotation.prm, refinement 2, adaptive τ, t ∈ [0, 0.06]: 6 steps) with
+// prm overrides, captures the screen,
 // and reads `statistics` and `summary` without their wall-time entries (the only values that may
 // differ between an interrupted and an uninterrupted run).
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <fluid_surface/io/checkpoint.h>
-#include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/scenes/run_program.h>
 #include <fluid_surface/scenes/simulation.h>
 
 #include <cstdio>
@@ -29,6 +29,22 @@ namespace CheckpointTest
     std::string message;    ///< RunStopped's or the error's text
     std::string screen;     ///< what the run printed on rank 0
   };
+
+  /// The text of the last "fluid_surface: [error: ]..." message in @p text ("" if none).
+  inline std::string
+  program_message(const std::string &text)
+  {
+    std::istringstream in(text);
+    std::string        message;
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("fluid_surface: ", 0) == 0)
+        {
+          message = line.substr(15);
+          if (message.rfind("error: ", 0) == 0)
+            message = message.substr(7);
+        }
+    return message;
+  }
 
   /// Runs the test case into @p directory with @p overrides on @p comm.
   inline Outcome
@@ -56,31 +72,10 @@ namespace CheckpointTest
     all.insert(all.end(), overrides.begin(), overrides.end());
     FluidSurface::set_overrides(prm, all);
     Outcome            outcome;
-    std::ostringstream screen;
-    std::streambuf    *old = std::cout.rdbuf(screen.rdbuf());
-    try
-      {
-        Simulation simulation(comm);
-        simulation.parse_parameters(prm);
-        simulation.run(prm);
-      }
-    catch (const RunStopped &exc)
-      {
-        outcome.status  = exc.exit_status();
-        outcome.message = exc.what();
-      }
-    catch (const InputError &exc)
-      {
-        outcome.status  = 2;
-        outcome.message = exc.what();
-      }
-    catch (const std::exception &exc)
-      {
-        outcome.status  = 1;
-        outcome.message = exc.what();
-      }
-    std::cout.rdbuf(old);
-    outcome.screen = screen.str();
+    std::ostringstream screen, errors;
+    outcome.status  = FluidSurface::run_simulation(prm, screen, errors, comm);
+    outcome.screen  = screen.str();
+    outcome.message = program_message(outcome.status == 0 ? outcome.screen : errors.str());
     return outcome;
   }
 

@@ -35,18 +35,18 @@ namespace FlowTest
     all.insert(all.end(), overrides.begin(), overrides.end());
     FluidSurface::set_overrides(prm, all);
     const MPI_Comm    comm = MPI_COMM_WORLD;
-    SurfaceGeometry   geometry(comm);
-    OutputWriter      output;
-    FixedSurfaceScene scene;
+    SurfaceGeometry                  geometry(comm);
+    OutputWriter                     output;
+    StatisticsFile                   statistics;
+    const dealii::ConditionalOStream silent(std::cout, false);
+    FixedSurfaceScene                scene(geometry, output, statistics, silent);
     geometry.parse_parameters(prm);
     output.parse_parameters(prm);
     scene.parse_parameters(prm);
     output.prepare_directory(comm, false);
     geometry.create();
-    StatisticsFile statistics;
     statistics.open(output.directory() + "statistics", dealii::Utilities::MPI::this_mpi_process(comm));
-    dealii::ConditionalOStream silent(std::cout, false);
-    scene.run(geometry, output, statistics, silent);
+    scene.run();
     return scene.results();
   }
 

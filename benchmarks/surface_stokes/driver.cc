@@ -37,18 +37,18 @@ main(int argc, char **argv)
       prm.set(arg.substr(slash + 1, eq - slash - 1), arg.substr(eq + 1));
       prm.leave_subsection();
     }
-  SurfaceGeometry   geometry(comm);
-  OutputWriter      output;
-  FixedSurfaceScene scene;
+  SurfaceGeometry                  geometry(comm);
+  OutputWriter                     output;
+  StatisticsFile                   statistics;
+  const dealii::ConditionalOStream pcout(std::cout, verbose && dealii::Utilities::MPI::this_mpi_process(comm) == 0);
+  FixedSurfaceScene                scene(geometry, output, statistics, pcout);
   geometry.parse_parameters(prm);
   output.parse_parameters(prm);
   scene.parse_parameters(prm);
   output.prepare_directory(comm, false);
   geometry.create();
-  StatisticsFile statistics;
   statistics.open(output.directory() + "statistics", dealii::Utilities::MPI::this_mpi_process(comm));
-  dealii::ConditionalOStream pcout(std::cout, verbose && dealii::Utilities::MPI::this_mpi_process(comm) == 0);
-  scene.run(geometry, output, statistics, pcout);
+  scene.run();
   const FixedSurfaceScene::Results &r = scene.results();
   const double area = geometry.measure().area;
   if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)

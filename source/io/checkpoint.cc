@@ -11,7 +11,6 @@
 
 #include <cerrno>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -697,46 +696,5 @@ namespace FluidSurface
       }
     current_slot = target;
     return true;
-  }
-
-  // ------------------------------------------------------------------ signals
-
-  namespace
-  {
-    volatile std::sig_atomic_t received = 0;
-
-    extern "C" void
-    on_stop_signal(int signal)
-    {
-      if (received != 0)
-        {
-          // A second signal: the user insists.
-          std::signal(signal, SIG_DFL);
-          std::raise(signal);
-          return;
-        }
-      received = signal;
-    }
-  } // namespace
-
-  void
-  Checkpoint::install_signal_handlers()
-  {
-    received = 0;
-    std::signal(SIGINT, on_stop_signal);
-    std::signal(SIGTERM, on_stop_signal);
-  }
-
-  void
-  Checkpoint::remove_signal_handlers()
-  {
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
-  }
-
-  int
-  Checkpoint::received_signal() const
-  {
-    return Utilities::MPI::max(static_cast<int>(received), communicator);
   }
 } // namespace FluidSurface

@@ -150,6 +150,89 @@ namespace FluidSurface
       return {{d, dd}};
     }
 
+    /// The manufactured Stokes solution on the level sets of Σ x_i²/a_i² with semi-axes @p axes.
+    FlowField
+    manufactured_solution(const Tensor<1, 3> &axes)
+    {
+      FlowField exact;
+      exact.velocity = [axes](const Point<3> &x, const double) {
+        const std::array<double, 3> u = manufactured_velocity<double>({{x[0], x[1], x[2]}}, axes);
+        return Tensor<1, 3>({u[0], u[1], u[2]});
+      };
+      exact.velocity_gradient = [axes](const Point<3> &x, const double) {
+        return manufactured_velocity_gradient(x, axes);
+      };
+      exact.pressure = [](const Point<3> &x, const double) { return x[0] * x[1] * x[1] + x[2]; };
+      return exact;
+    }
+
+    /// The coordinate axes about which rotations map the ellipsoid with semi-axes @p axes onto itself.
+    std::vector<Tensor<1, 3>>
+    symmetry_axes(const Tensor<1, 3> &axes)
+    {
+      std::vector<Tensor<1, 3>> killing_axes;
+      for (unsigned int d = 0; d < 3; ++d)
+        if (std::abs(axes[(d + 1) % 3] - axes[(d + 2) % 3]) < 1e-12)
+          killing_axes.push_back(Tensor<1, 3>({d == 0 ? 1.0 : 0.0, d == 1 ? 1.0 : 0.0, d == 2 ? 1.0 : 0.0}));
+      return killing_axes;
+    }
+
+    /// The Killing field u = ω e_z × x with p = ½ω²(x² + y²).
+    FlowField
+    killing_solution(const double w)
+    {
+      FlowField exact;
+      exact.velocity = [w](const Point<3> &x, const double) { return Tensor<1, 3>({-w * x[1], w * x[0], 0.0}); };
+      exact.velocity_gradient = [w](const Point<3> &, const double) {
+        Tensor<2, 3> J;
+        J[0][1] = -w;
+        J[1][0] = w;
+        return J;
+      };
+      exact.pressure = [w](const Point<3> &x, const double) { return 0.5 * w * w * (x[0] * x[0] + x[1] * x[1]); };
+      return exact;
+    }
+
+    /**
+     * The decaying mode u = e^{−λt} curl_S Y_l⁰ on the unit sphere; curl_S Y = ν × ∇_S Y with
+     * Y = P_l(z) gives u = P_l'(z) (y, −x, 0) e^{−λt}.
+     */
+    FlowField
+    decaying_mode_solution(const unsigned int l, const double lambda, const bool with_convection)
+    {
+      FlowField exact;
+      exact.velocity = [l, lambda](const Point<3> &x, const double t) {
+        const double a = legendre_derivatives(l, x[2])[0] * std::exp(-lambda * t);
+        return Tensor<1, 3>({a * x[1], -a * x[0], 0.0});
+      };
+      exact.velocity_gradient = [l, lambda](const Point<3> &x, const double t) {
+        const std::array<double, 2> d = legendre_derivatives(l, x[2]);
+        const double                e = std::exp(-lambda * t);
+        Tensor<2, 3>                J;
+        J[0][1] = d[0] * e;
+        J[0][2] = d[1] * x[1] * e;
+        J[1][0] = -d[0] * e;
+        J[1][2] = -d[1] * x[0] * e;
+        return J;
+      };
+      // With convection the zonal flow's ∇_u u = −U² cot θ e_θ is a gradient:
+      // p(z) = −e^{−2λt} ∫₀^z s P_l'(s)² ds; without convection p = 0.
+      exact.pressure = [l, lambda, with_convection](const Point<3> &x, const double t) {
+        if (!with_convection)
+          return 0.0;
+        const QGauss<1> gauss(l + 2);
+        double          integral = 0;
+        for (unsigned int k = 0; k < gauss.size(); ++k)
+          {
+            const double s = x[2] * gauss.point(k)[0];
+            const double d = legendre_derivatives(l, s)[0];
+            integral += s * d * d * x[2] * gauss.weight(k);
+          }
+        return -std::exp(-2.0 * lambda * t) * integral;
+      };
+      return exact;
+    }
+
   } // namespace
 
   void
@@ -219,190 +302,161 @@ namespace FluidSurface
       throw_invalid_entry("flow/inertia", "false", "true for the time-dependent problem " + name);
   }
 
+  FixedSurfaceScene::FixedSurfaceScene(SurfaceGeometry          &geometry,
+                                       OutputWriter             &output,
+                                       StatisticsFile           &statistics,
+                                       const ConditionalOStream &pcout)
+    : geometry(geometry)
+    , output(output)
+    , statistics(statistics)
+    , pcout(pcout)
+  {}
+
   void
-  FixedSurfaceScene::run(SurfaceGeometry      &geometry,
-                         OutputWriter         &output,
-                         StatisticsFile       &statistics,
-                         ConditionalOStream   &pcout)
+  FixedSurfaceScene::run()
   {
-    Timer wall_timer;
+    wall_timer.restart();
     last_results = Results();
     geometry.compute_curvature(); // ñ (continuous penalty normal) and H for the output
 
-    const bool   stationary = problem == Problem::manufactured_sphere || problem == Problem::manufactured_ellipsoid;
-    const double Re         = flow_parameters.Re;
-    const Tensor<1, 3> axes = semi_axes;
-    SurfaceFlow  flow(geometry, flow_parameters);
-    flow.set_terms(!stationary, flow_parameters.convection);
-    flow.set_exact_normal([axes](const Point<3> &x) { return exact_normal(x, axes); });
-
-    // Exact solution and Killing fields of the problem.
-    FlowField                 exact;
-    std::vector<Tensor<1, 3>> killing_axes;
-    const unsigned int        l      = mode_number;
-    const double              lambda = (l * (l + 1.0) - 2.0) / Re;
-    last_results.exact_decay_rate    = (problem == Problem::decaying_mode ? lambda : 0.0);
-    switch (problem)
-      {
-        case Problem::manufactured_sphere:
-        case Problem::manufactured_ellipsoid:
-          {
-            exact.velocity = [axes](const Point<3> &x, const double) {
-              const std::array<double, 3> u = manufactured_velocity<double>({{x[0], x[1], x[2]}}, axes);
-              return Tensor<1, 3>({u[0], u[1], u[2]});
-            };
-            exact.velocity_gradient = [axes](const Point<3> &x, const double) {
-              return manufactured_velocity_gradient(x, axes);
-            };
-            exact.pressure = [](const Point<3> &x, const double) { return x[0] * x[1] * x[1] + x[2]; };
-            flow.set_body_force(
-              [axes, Re](const Point<3> &x, const double) { return manufactured_force(x, axes, Re); });
-            // Rotations about the coordinate axes that map the surface onto itself.
-            for (unsigned int d = 0; d < 3; ++d)
-              if (std::abs(axes[(d + 1) % 3] - axes[(d + 2) % 3]) < 1e-12)
-                killing_axes.push_back(Tensor<1, 3>({d == 0 ? 1.0 : 0.0, d == 1 ? 1.0 : 0.0, d == 2 ? 1.0 : 0.0}));
-            break;
-          }
-        case Problem::killing:
-          {
-            const double w = omega;
-            exact.velocity = [w](const Point<3> &x, const double) { return Tensor<1, 3>({-w * x[1], w * x[0], 0.0}); };
-            exact.velocity_gradient = [w](const Point<3> &, const double) {
-              Tensor<2, 3> J;
-              J[0][1] = -w;
-              J[1][0] = w;
-              return J;
-            };
-            exact.pressure = [w](const Point<3> &x, const double) {
-              return 0.5 * w * w * (x[0] * x[0] + x[1] * x[1]);
-            };
-            break;
-          }
-        case Problem::decaying_mode:
-          {
-            // curl_S Y = ν × ∇_S Y with Y = P_l(z): u = P_l'(z) (y, −x, 0) e^{−λt}.
-            exact.velocity = [l, lambda](const Point<3> &x, const double t) {
-              const double a = legendre_derivatives(l, x[2])[0] * std::exp(-lambda * t);
-              return Tensor<1, 3>({a * x[1], -a * x[0], 0.0});
-            };
-            exact.velocity_gradient = [l, lambda](const Point<3> &x, const double t) {
-              const std::array<double, 2> d = legendre_derivatives(l, x[2]);
-              const double                e = std::exp(-lambda * t);
-              Tensor<2, 3>                J;
-              J[0][1] = d[0] * e;
-              J[0][2] = d[1] * x[1] * e;
-              J[1][0] = -d[0] * e;
-              J[1][2] = -d[1] * x[0] * e;
-              return J;
-            };
-            // With convection the zonal flow's ∇_u u = −U² cot θ e_θ is a gradient:
-            // p(z) = −e^{−2λt} ∫₀^z s P_l'(s)² ds; without convection p = 0.
-            const bool with_convection = flow_parameters.convection;
-            exact.pressure             = [l, lambda, with_convection](const Point<3> &x, const double t) {
-              if (!with_convection)
-                return 0.0;
-              const QGauss<1> gauss(l + 2);
-              double          integral = 0;
-              for (unsigned int k = 0; k < gauss.size(); ++k)
-                {
-                  const double s = x[2] * gauss.point(k)[0];
-                  const double d = legendre_derivatives(l, s)[0];
-                  integral += s * d * d * x[2] * gauss.weight(k);
-                }
-              return -std::exp(-2.0 * lambda * t) * integral;
-            };
-            break;
-          }
-      }
-
-    flow.setup(stationary ? killing_axes : std::vector<Tensor<1, 3>>());
-    last_results.n_dofs = flow.dof_handler().n_dofs();
+    SurfaceFlow     flow(geometry, flow_parameters);
+    const FlowField exact         = set_up_problem(flow);
+    last_results.n_dofs           = flow.dof_handler().n_dofs();
+    last_results.exact_decay_rate = (problem == Problem::decaying_mode ? decay_rate() : 0.0);
     pcout << "-- fixed surface: " << geometry.description() << '\n'
           << "   " << flow.description() << std::endl;
 
-    const SpeedPostprocessor speed;
-    auto                     write_output = [&](const double time) {
-      output.write(geometry, time, [&](DataOut<2, 3> &data_out) {
-        std::vector<std::string> names(3, "velocity");
-        names.emplace_back("pressure");
-        std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
-          3, DataComponentInterpretation::component_is_part_of_vector);
-        interpretation.push_back(DataComponentInterpretation::component_is_scalar);
-        if (flow.dof_handler().get_fe().n_components() == 5)
-          {
-            names.emplace_back("tangentiality_multiplier");
-            interpretation.push_back(DataComponentInterpretation::component_is_scalar);
-          }
-        data_out.add_data_vector(flow.dof_handler(), flow.solution(), names, interpretation);
-        data_out.add_data_vector(flow.dof_handler(), flow.solution(), speed);
-      });
-    };
-    auto record = [&](const unsigned int step, const double time, const double tau, const SurfaceFlow::SolveInfo &info) {
-      const double              energy      = flow.kinetic_energy();
-      const double              dissipation = flow.dissipation_rate();
-      const SurfaceFlow::Errors errors      = flow.compute_errors(exact, time);
-      statistics.add_value("time step", step);
-      statistics.add_value("time", time);
-      statistics.add_value("tau", tau);
-      statistics.add_value("kinetic energy", energy);
-      statistics.add_value("dissipation rate", dissipation);
-      statistics.add_value("linear iterations", info.iterations);
-      statistics.add_value("velocity error L2", errors.velocity);
-      statistics.add_value("tangential velocity error L2", errors.tangential);
-      statistics.add_value("velocity gradient error L2", errors.gradient);
-      statistics.add_value("pressure error L2", errors.pressure);
-      statistics.add_value("normal velocity L2", errors.normal_velocity);
-      statistics.add_value("wall time", wall_timer.wall_time());
-      statistics.end_row();
-      last_results.errors = errors;
-      last_results.final_kinetic_energy = energy;
-      last_results.total_iterations += info.iterations;
-      last_results.max_iterations = std::max(last_results.max_iterations, info.iterations);
-      last_results.factorizations += info.factorized;
-      last_results.assemble_time += info.assemble_time;
-      last_results.solve_time += info.solve_time;
-      pcout << "*** Step " << step << "  t = " << time << "  τ = " << tau << "  (" << info.iterations
-            << " its" << (info.factorized ? ", new factorization" : "") << ")\n"
-            << std::setprecision(8) << "    F_kin = " << energy << "  D = " << dissipation
-            << std::setprecision(3) << "  ‖u−u_h‖ = " << errors.velocity << "  ‖∇_P(u−u_h)‖ = " << errors.gradient
-            << "  ‖p−p_h‖ = " << errors.pressure << "  ‖u_h·ν‖ = " << errors.normal_velocity << std::setprecision(6)
-            << std::endl;
-      return energy;
-    };
-
-    if (stationary)
-      {
-        const SurfaceFlow::SolveInfo info = flow.solve_stationary();
-        record(0, 0.0, 0.0, info);
-        write_output(0.0);
-        last_results.initial_kinetic_energy = last_results.final_kinetic_energy;
-      }
+    if (is_stationary())
+      solve_stationary(flow, exact);
     else
-      {
-        flow.set_initial_velocity(exact, 0.0);
-        last_results.initial_kinetic_energy = record(0, 0.0, time_step, SurfaceFlow::SolveInfo());
-        write_output(0.0);
-        const unsigned int n_steps = static_cast<unsigned int>(std::round(end_time / time_step));
-        double             time    = 0;
-        for (unsigned int step = 1; step <= n_steps; ++step)
-          {
-            time                              = step * time_step;
-            const SurfaceFlow::SolveInfo info = flow.advance(time, time_step);
-            record(step, time, time_step, info);
-            if (output.due(time) || step == n_steps)
-              write_output(time);
-          }
-        last_results.steps = n_steps;
-        const double F0 = last_results.initial_kinetic_energy, F1 = last_results.final_kinetic_energy;
-        last_results.energy_change       = std::abs(F1 - F0) / F0;
-        last_results.measured_decay_rate = -std::log(F1 / F0) / (2.0 * time);
-        if (problem == Problem::killing)
-          pcout << "-- Killing field: relative change of the kinetic energy over t = " << time << ": "
-                << last_results.energy_change << std::endl;
-        if (problem == Problem::decaying_mode)
-          pcout << "-- decaying mode l = " << l << ": measured rate " << std::setprecision(8)
-                << last_results.measured_decay_rate << ", exact " << lambda << std::setprecision(6) << std::endl;
-      }
+      run_time_loop(flow, exact);
     last_results.wall_time = wall_timer.wall_time();
+  }
+
+  bool
+  FixedSurfaceScene::is_stationary() const
+  {
+    return problem == Problem::manufactured_sphere || problem == Problem::manufactured_ellipsoid;
+  }
+
+  double
+  FixedSurfaceScene::decay_rate() const
+  {
+    return (mode_number * (mode_number + 1.0) - 2.0) / flow_parameters.Re;
+  }
+
+  FlowField
+  FixedSurfaceScene::set_up_problem(SurfaceFlow &flow) const
+  {
+    const Tensor<1, 3> axes = semi_axes;
+    const double       Re   = flow_parameters.Re;
+    flow.set_terms(!is_stationary(), flow_parameters.convection);
+    flow.set_exact_normal([axes](const Point<3> &x) { return exact_normal(x, axes); });
+    if (is_stationary())
+      {
+        flow.set_body_force([axes, Re](const Point<3> &x, const double) { return manufactured_force(x, axes, Re); });
+        flow.setup(symmetry_axes(axes));
+        return manufactured_solution(axes);
+      }
+    flow.setup();
+    return problem == Problem::killing ? killing_solution(omega) :
+                                         decaying_mode_solution(mode_number, decay_rate(), flow_parameters.convection);
+  }
+
+  void
+  FixedSurfaceScene::solve_stationary(SurfaceFlow &flow, const FlowField &exact)
+  {
+    const SurfaceFlow::SolveInfo info = flow.solve_stationary();
+    record(flow, exact, 0, 0.0, 0.0, info);
+    write_output(flow, 0.0);
+    last_results.initial_kinetic_energy = last_results.final_kinetic_energy;
+  }
+
+  void
+  FixedSurfaceScene::run_time_loop(SurfaceFlow &flow, const FlowField &exact)
+  {
+    flow.set_initial_velocity(exact, 0.0);
+    last_results.initial_kinetic_energy = record(flow, exact, 0, 0.0, time_step, SurfaceFlow::SolveInfo());
+    write_output(flow, 0.0);
+    const unsigned int n_steps = static_cast<unsigned int>(std::round(end_time / time_step));
+    double             time    = 0;
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        time                              = step * time_step;
+        const SurfaceFlow::SolveInfo info = flow.advance(time, time_step);
+        record(flow, exact, step, time, time_step, info);
+        if (output.due(time) || step == n_steps)
+          write_output(flow, time);
+      }
+    last_results.steps = n_steps;
+    const double F0 = last_results.initial_kinetic_energy, F1 = last_results.final_kinetic_energy;
+    last_results.energy_change       = std::abs(F1 - F0) / F0;
+    last_results.measured_decay_rate = -std::log(F1 / F0) / (2.0 * time);
+    if (problem == Problem::killing)
+      pcout << "-- Killing field: relative change of the kinetic energy over t = " << time << ": "
+            << last_results.energy_change << std::endl;
+    if (problem == Problem::decaying_mode)
+      pcout << "-- decaying mode l = " << mode_number << ": measured rate " << std::setprecision(8)
+            << last_results.measured_decay_rate << ", exact " << decay_rate() << std::setprecision(6) << std::endl;
+  }
+
+  double
+  FixedSurfaceScene::record(const SurfaceFlow            &flow,
+                            const FlowField              &exact,
+                            const unsigned int            step,
+                            const double                  time,
+                            const double                  tau,
+                            const SurfaceFlow::SolveInfo &info)
+  {
+    const double              energy      = flow.kinetic_energy();
+    const double              dissipation = flow.dissipation_rate();
+    const SurfaceFlow::Errors errors      = flow.compute_errors(exact, time);
+    statistics.add_value("time step", step);
+    statistics.add_value("time", time);
+    statistics.add_value("tau", tau);
+    statistics.add_value("kinetic energy", energy);
+    statistics.add_value("dissipation rate", dissipation);
+    statistics.add_value("linear iterations", info.iterations);
+    statistics.add_value("velocity error L2", errors.velocity);
+    statistics.add_value("tangential velocity error L2", errors.tangential);
+    statistics.add_value("velocity gradient error L2", errors.gradient);
+    statistics.add_value("pressure error L2", errors.pressure);
+    statistics.add_value("normal velocity L2", errors.normal_velocity);
+    statistics.add_value("wall time", wall_timer.wall_time());
+    statistics.end_row();
+    last_results.errors               = errors;
+    last_results.final_kinetic_energy = energy;
+    last_results.total_iterations += info.iterations;
+    last_results.max_iterations = std::max(last_results.max_iterations, info.iterations);
+    last_results.factorizations += info.factorized;
+    last_results.assemble_time += info.assemble_time;
+    last_results.solve_time += info.solve_time;
+    pcout << "*** Step " << step << "  t = " << time << "  τ = " << tau << "  (" << info.iterations << " its"
+          << (info.factorized ? ", new factorization" : "") << ")\n"
+          << std::setprecision(8) << "    F_kin = " << energy << "  D = " << dissipation << std::setprecision(3)
+          << "  ‖u−u_h‖ = " << errors.velocity << "  ‖∇_P(u−u_h)‖ = " << errors.gradient
+          << "  ‖p−p_h‖ = " << errors.pressure << "  ‖u_h·ν‖ = " << errors.normal_velocity << std::setprecision(6)
+          << std::endl;
+    return energy;
+  }
+
+  void
+  FixedSurfaceScene::write_output(const SurfaceFlow &flow, const double time)
+  {
+    const SpeedPostprocessor speed;
+    output.write(geometry, time, [&](DataOut<2, 3> &data_out) {
+      std::vector<std::string> names(3, "velocity");
+      names.emplace_back("pressure");
+      std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
+        3, DataComponentInterpretation::component_is_part_of_vector);
+      interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+      if (flow.dof_handler().get_fe().n_components() == 5)
+        {
+          names.emplace_back("tangentiality_multiplier");
+          interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+        }
+      data_out.add_data_vector(flow.dof_handler(), flow.solution(), names, interpretation);
+      data_out.add_data_vector(flow.dof_handler(), flow.solution(), speed);
+    });
   }
 } // namespace FluidSurface

@@ -11,6 +11,13 @@ namespace FluidSurface
 {
   using namespace dealii;
 
+  TimeStepper::TimeStepper()
+  {
+    ParameterHandler prm;
+    declare_parameters(prm);
+    parse_parameters(prm);
+  }
+
   void
   TimeStepper::declare_parameters(ParameterHandler &prm)
   {
@@ -59,7 +66,7 @@ namespace FluidSurface
     growth           = prm.get_double("growth factor");
     shrink           = prm.get_double("shrink factor");
     easy_steps       = prm.get_integer("easy steps before growth");
-    energy_tolerance = prm.get_double("energy tolerance");
+    relative_energy_tolerance = prm.get_double("energy tolerance");
     if (tau_min > tau_max)
       throw_invalid_entry("time stepping/minimum time step",
                           prm.get("minimum time step"),
@@ -77,14 +84,6 @@ namespace FluidSurface
     const double remaining = end_time - current_time;
     // Avoid a sliver of a last step.
     return (remaining < 1.5 * tau) ? (remaining > tau ? 0.5 * remaining : remaining) : tau;
-  }
-
-  bool
-  TimeStepper::energy_acceptable(const double old_energy, const double new_energy, const double tau_used) const
-  {
-    // The 1e-9 floor is the level at which F is computed reliably (solver and quadrature rounding).
-    return std::isfinite(new_energy) &&
-           new_energy <= old_energy + (energy_tolerance * tau_used + 1e-9) * std::abs(old_energy);
   }
 
   void

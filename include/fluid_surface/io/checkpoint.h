@@ -98,28 +98,6 @@ namespace FluidSurface
   };
 
   /**
-   * A run stopped on request after writing a checkpoint (SIGINT/SIGTERM, or
-   * `checkpoint/steps per run`); what() is the message for the user.
-   */
-  class RunStopped : public std::runtime_error
-  {
-  public:
-    RunStopped(const std::string &message, const int exit_status)
-      : std::runtime_error(message)
-      , status(exit_status)
-    {}
-    /// 0 after `steps per run`, 128 + signal number after a signal (the shell's convention).
-    int
-    exit_status() const
-    {
-      return status;
-    }
-
-  private:
-    int status;
-  };
-
-  /**
    * Checkpoints of a long run in `<output directory>/checkpoint/`: two slots,
    * `slot-0` and `slot-1`, written alternately; each is written as
    * `slot-N.tmp`, made durable (fsync) and renamed only when complete, and then
@@ -128,9 +106,6 @@ namespace FluidSurface
    * truncated or corrupt slot is recognized on resume and the other one used.
    * A checkpoint that cannot be written (disk full, permissions) is reported
    * and the previous slot kept; the run goes on.
-   *
-   * SIGINT and SIGTERM (see install_signal_handlers()) only set a flag: the
-   * time loop finishes its step, writes a checkpoint and stops.
    */
   class Checkpoint
   {
@@ -206,16 +181,6 @@ namespace FluidSurface
     {
       return current_slot.empty() ? std::string() : directory + current_slot;
     }
-
-    /// Makes SIGINT and SIGTERM set a flag instead of killing the process (a second signal kills it).
-    static void
-    install_signal_handlers();
-    /// Restores the default handlers.
-    static void
-    remove_signal_handlers();
-    /// The signal received on any rank since install_signal_handlers() (0: none). Collective.
-    int
-    received_signal() const;
 
   private:
     /// Checks one slot: "" if it is complete and its checksums match, else what is wrong.

@@ -4,11 +4,13 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/base/timer.h>
 
 #include <fluid_surface/flow/surface_flow.h>
 #include <fluid_surface/geometry/surface_geometry.h>
 #include <fluid_surface/io/output_writer.h>
 #include <fluid_surface/io/statistics_file.h>
+#include <fluid_surface/scenes/scene.h>
 
 namespace FluidSurface
 {
@@ -23,7 +25,7 @@ namespace FluidSurface
    *  - decaying mode: u = e^{−λt} curl_S Y_l⁰ on the unit sphere,
    *    λ = (l(l+1) − 2)/Re, with or without convection.
    */
-  class FixedSurfaceScene
+  class FixedSurfaceScene : public Scene
   {
   public:
     /// The verification problem.
@@ -54,19 +56,22 @@ namespace FluidSurface
       dealii::types::global_dof_index n_dofs     = 0;
     };
 
+    /// The scene works on the surface, files and screen of the Simulation (or of a test).
+    FixedSurfaceScene(SurfaceGeometry                  &geometry,
+                      OutputWriter                     &output,
+                      StatisticsFile                   &statistics,
+                      const dealii::ConditionalOStream &pcout);
+
     /// Declares `subsection fixed surface`, `subsection time stepping` and (via SurfaceFlow) `subsection flow`.
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     /// Reads them; checks that the problem matches the shape of `subsection geometry`.
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm) override;
 
     /// A whole fixed-surface run: stationary solve or time loop, VTU output, statistics rows, screen lines.
     void
-    run(SurfaceGeometry           &geometry,
-        OutputWriter               &output,
-        StatisticsFile             &statistics,
-        dealii::ConditionalOStream &pcout);
+    run() override;
 
     const Results &
     results() const
@@ -75,6 +80,39 @@ namespace FluidSurface
     }
 
   private:
+    /// Whether the problem is a stationary Stokes problem (the manufactured solutions).
+    bool
+    is_stationary() const;
+    /// The decay rate λ = (l(l+1) − 2)/Re of the decaying mode.
+    double
+    decay_rate() const;
+    /// The exact solution of the problem; for the manufactured ones also their body force on @p flow.
+    FlowField
+    set_up_problem(SurfaceFlow &flow) const;
+    /// The stationary solve, its statistics row and output.
+    void
+    solve_stationary(SurfaceFlow &flow, const FlowField &exact);
+    /// The time loop with the fixed step `time stepping/time step` up to `end time`.
+    void
+    run_time_loop(SurfaceFlow &flow, const FlowField &exact);
+    /// One statistics row and screen report at @p time; returns the kinetic energy.
+    double
+    record(const SurfaceFlow           &flow,
+           const FlowField             &exact,
+           const unsigned int           step,
+           const double                 time,
+           const double                 tau,
+           const SurfaceFlow::SolveInfo &info);
+    /// Writes the VTU file of velocity, pressure and speed at @p time.
+    void
+    write_output(const SurfaceFlow &flow, const double time);
+
+    SurfaceGeometry                  &geometry;
+    OutputWriter                     &output;
+    StatisticsFile                   &statistics;
+    const dealii::ConditionalOStream &pcout;
+    dealii::Timer                     wall_timer;
+
     Problem                 problem       = Problem::manufactured_sphere;
     unsigned int            mode_number   = 2;
     double                  omega         = 1.0;

@@ -11,14 +11,17 @@ namespace FluidSurface
   class CheckpointData;
 
   /**
-   * Time and step size τ of a run, with the energy-based step control: a step
-   * whose total energy F rises by more than the tolerance, or whose solve
-   * fails, is rejected and retried with τ·shrink; after a number of easy
-   * steps τ grows by a factor up to τ_max.
+   * Time and step size τ of a run (`subsection time stepping`): a rejected
+   * step (its solve failed, or EnergyStepController rejected its energy) is
+   * retried with τ·shrink; after a number of easy steps τ grows by a factor,
+   * up to τ_max.
    */
   class TimeStepper
   {
   public:
+    /// A stepper with the declared defaults of every entry.
+    TimeStepper();
+
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     void
@@ -53,9 +56,12 @@ namespace FluidSurface
       return end_time;
     }
 
-    /// Whether an energy change from @p old_energy to @p new_energy in a step @p tau_used is acceptable.
-    bool
-    energy_acceptable(const double old_energy, const double new_energy, const double tau_used) const;
+    /// ε_F of `energy tolerance`: the largest relative rate at which the total energy may rise.
+    double
+    energy_tolerance() const
+    {
+      return relative_energy_tolerance;
+    }
 
     /// Advances time by the τ just used; grows τ after enough easy steps.
     void
@@ -104,15 +110,16 @@ namespace FluidSurface
     load(const CheckpointData &data);
 
   private:
-    double       end_time         = 1;
-    double       tau              = 1e-2;
-    double       tau_min          = 1e-7;
-    double       tau_max          = 1e-1;
-    double       growth           = 1.25;
-    double       shrink           = 0.5;
-    unsigned int easy_steps       = 5;
-    double       energy_tolerance = 1e-3;
-    bool         adaptive         = true;
+    // The parameters; their defaults are those of declare_parameters(), set by the constructor.
+    double       end_time;
+    double       tau; ///< τ for the next step
+    double       tau_min;
+    double       tau_max;
+    double       growth;
+    double       shrink;
+    unsigned int easy_steps;
+    double       relative_energy_tolerance;
+    bool         adaptive;
 
     double       current_time = 0;
     unsigned int n_accepted   = 0;

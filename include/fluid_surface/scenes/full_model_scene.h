@@ -1,0 +1,115 @@
+#ifndef fluid_surface_scenes_full_model_scene_h
+#define fluid_surface_scenes_full_model_scene_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <fluid_surface/geometry/surface_geometry.h>
+#include <fluid_surface/io/checkpoint.h>
+#include <fluid_surface/io/output_writer.h>
+#include <fluid_surface/io/statistics_file.h>
+#include <fluid_surface/model/fluid_deformable_surface.h>
+#include <fluid_surface/postprocess/diagnostics.h>
+#include <fluid_surface/scenes/scene.h>
+#include <fluid_surface/time_stepping/energy_step_controller.h>
+#include <fluid_surface/time_stepping/time_stepper.h>
+
+namespace FluidSurface
+{
+  /**
+   * Scene `full`: the fluid deformable surface of the seed paper (surface
+   * Navier–Stokes, bending, volume constraint, mesh redistribution) on the
+   * moving surface. The time loop takes a step, checks its energy
+   * (EnergyStepController), accepts or retries it, records diagnostics,
+   * writes output and checkpoints; it ends with the summary. A run stopped by
+   * SIGINT/SIGTERM or after `checkpoint/steps per run` writes a checkpoint and
+   * throws RunStopped; a later run continues it bit for bit.
+   */
+  class FullModelScene : public Scene
+  {
+  public:
+    /// The scene works on the surface, files, screen and wall clock of the Simulation.
+    FullModelScene(const MPI_Comm                    communicator,
+                   SurfaceGeometry                  &geometry,
+                   OutputWriter                     &output,
+                   StatisticsFile                   &statistics,
+                   const dealii::ConditionalOStream &pcout,
+                   const dealii::Timer              &wall_timer);
+
+    /// Reads the time stepping, the model, the diagnostics and the checkpoints.
+    void
+    parse_parameters(dealii::ParameterHandler &prm) override;
+
+    /// Sets up the checkpoint directory and finds the checkpoint chosen by `checkpoint/resume`.
+    bool
+    find_checkpoint() override;
+
+    /// The time loop, from step 0 or from the checkpoint find_checkpoint() chose.
+    void
+    run() override;
+
+  private:
+    /// Sets up the model at t = 0 and records and writes the initial state.
+    void
+    set_up_initial_state();
+    /// Restores every component from the checkpoint and checks that it reproduces its total energy.
+    void
+    resume_from_checkpoint();
+    /// One statistics row and screen report of the accepted state.
+    void
+    record_step(const double tau, const FluidDeformableSurface::StepResult &step);
+    /// Throws std::runtime_error when the mesh quality fell below `mesh quality floor`.
+    void
+    check_mesh_quality() const;
+    /// Writes the VTU file of the current state.
+    void
+    write_output();
+    /// Writes everything a resumed run needs to continue bit for bit; returns whether it was written.
+    bool
+    write_checkpoint();
+    /**
+     * After an accepted step: writes a checkpoint if one is due or if the run
+     * stops (on @p signal, or after `steps per run`); then throws RunStopped.
+     */
+    void
+    checkpoint_or_stop(const int signal);
+    /// Writes the file `summary` and prints it (without the wall time unless `report wall time`).
+    void
+    write_summary() const;
+    /// Writes the wall time per section (file `timing`; the screen if `report wall time`).
+    void
+    write_timing();
+    /// Wall time of the run in seconds, including the part before a restart.
+    double
+    elapsed_wall_time() const
+    {
+      return wall_time_before_restart + wall_timer.wall_time();
+    }
+
+    MPI_Comm                          communicator;
+    SurfaceGeometry                  &geometry;
+    OutputWriter                     &output;
+    StatisticsFile                   &statistics;
+    dealii::ConditionalOStream        pcout; ///< the Simulation's screen (rank 0)
+    const dealii::Timer              &wall_timer;
+    /// Wall time per section: assembly, factorization, linear solve, curvature and energy, diagnostics,
+    /// output. Printed at the end when `output/report wall time` is on; always written to the file `timing`.
+    dealii::TimerOutput computing_timer;
+
+    TimeStepper            time;
+    EnergyStepController   energy_control;
+    FluidDeformableSurface model;
+    Diagnostics            diagnostics;
+    Checkpoint             checkpoint;
+
+    bool         resuming = false;
+    double       total_energy = 0;             ///< F = kinetic + bending energy of the accepted state
+    double       willmore     = 0;             ///< ½∫H² of the accepted state
+    double       wall_time_before_restart = 0; ///< wall time of the runs before the checkpoint resumed from
+    unsigned int steps_this_run           = 0;
+    unsigned int last_checkpoint_step     = 0; ///< the step of the last checkpoint written or resumed from
+  };
+} // namespace FluidSurface
+
+#endif

@@ -1,0 +1,45 @@
+#ifndef fluid_surface_scenes_geometry_scene_h
+#define fluid_surface_scenes_geometry_scene_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <fluid_surface/geometry/surface_geometry.h>
+#include <fluid_surface/io/output_writer.h>
+#include <fluid_surface/io/statistics_file.h>
+#include <fluid_surface/scenes/scene.h>
+
+namespace FluidSurface
+{
+  /**
+   * Scene `geometry`: measures the surface (area, volume, reduced volume,
+   * Willmore energy ½∫H², mesh quality) into one statistics row and one screen
+   * report, and writes it; no time steps.
+   */
+  class GeometryScene : public Scene
+  {
+  public:
+    /// The scene works on the surface, files, screen and wall clock of the Simulation.
+    GeometryScene(SurfaceGeometry                &geometry,
+                  OutputWriter                   &output,
+                  StatisticsFile                 &statistics,
+                  const dealii::ConditionalOStream &pcout,
+                  const dealii::Timer            &wall_timer);
+
+    /// The scene has no parameters of its own.
+    void
+    parse_parameters(dealii::ParameterHandler &prm) override;
+
+    void
+    run() override;
+
+  private:
+    SurfaceGeometry                 &geometry;
+    OutputWriter                    &output;
+    StatisticsFile                  &statistics;
+    const dealii::ConditionalOStream &pcout;
+    const dealii::Timer             &wall_timer;
+  };
+} // namespace FluidSurface
+
+#endif

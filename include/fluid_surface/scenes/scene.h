@@ -1,0 +1,40 @@
+#ifndef fluid_surface_scenes_scene_h
+#define fluid_surface_scenes_scene_h
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace FluidSurface
+{
+  /**
+   * What a run computes (`model/scene`): GeometryScene, FixedSurfaceScene or
+   * FullModelScene. Simulation creates the selected scene, lets it read its
+   * parameters, prepares the output directory and builds the surface; then
+   * run() computes and writes into the output directory.
+   */
+  class Scene
+  {
+  public:
+    virtual ~Scene() = default;
+
+    /// Reads and checks the parameters of the scene itself (InputError on bad input).
+    virtual void
+    parse_parameters(dealii::ParameterHandler &prm) = 0;
+
+    /**
+     * Looks for a checkpoint to continue from, before the output directory is
+     * prepared; returns whether the run resumes (then the directory and its
+     * statistics file are kept). A scene without checkpoints never resumes.
+     */
+    virtual bool
+    find_checkpoint()
+    {
+      return false;
+    }
+
+    /// Computes the scene on the built surface; writes into the prepared output directory.
+    virtual void
+    run() = 0;
+  };
+} // namespace FluidSurface
+
+#endif

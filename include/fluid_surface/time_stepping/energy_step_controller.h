@@ -1,0 +1,89 @@
+#ifndef fluid_surface_time_stepping_energy_step_controller_h
+#define fluid_surface_time_stepping_energy_step_controller_h
+
+#include <optional>
+#include <ostream>
+#include <string>
+
+namespace FluidSurface
+{
+  class CheckpointData;
+
+  /**
+   * The energy check of a solved step of scene full: the total energy F must
+   * not rise faster than the relative rate ε_F (`time stepping/energy
+   * tolerance`, see doc/scheme.md). A step that fails the check is rejected
+   * and retried with a smaller τ, unless its rise rate rise/τ did not fall
+   * when τ was halved: such a rise is a space-discretization effect that no
+   * step size removes, so the step is accepted with a warning (if the rise
+   * stays below 10⁻³|F|) and τ returns to its value before the rejections.
+   * The controller counts these rises and the accepted steps on which F rose
+   * at all, for the summary; the counters are part of a checkpoint.
+   */
+  class EnergyStepController
+  {
+  public:
+    /// The three outcomes of the energy check.
+    enum class Verdict
+    {
+      accept,             ///< F did not rise faster than the tolerance
+      reject,             ///< retry the step with a smaller τ
+      accept_with_warning ///< a rise that halving τ did not reduce (space discretization)
+    };
+
+    /// What to do with a step, and with τ afterwards.
+    struct Decision
+    {
+      Verdict verdict = Verdict::accept;
+      /// For Verdict::reject: the energies, for the message of TimeStepper::reject().
+      std::string reason;
+      /// The energy change F(t+τ) − F(t).
+      double rise = 0;
+      /// If set, the τ to continue with (the τ before the rejections, which did not remove a time-step error).
+      std::optional<double> step_size;
+    };
+
+    /// A controller for the relative energy rise rate @p energy_tolerance ε_F.
+    explicit EnergyStepController(const double energy_tolerance = 0);
+
+    /**
+     * Whether an energy change from @p old_energy to @p new_energy in a step
+     * of size @p tau passes the tolerance: F(t+τ) ≤ F(t) + (ε_F τ + 10⁻⁹)|F(t)|.
+     */
+    bool
+    acceptable(const double old_energy, const double new_energy, const double tau) const;
+
+    /**
+     * Judges a solved step from @p old_energy to @p new_energy of size @p tau
+     * and updates the counters; a rejected step is retried by the caller.
+     */
+    Decision
+    decide(const double old_energy, const double new_energy, const double tau);
+
+    /// Appends the three summary lines (rises accepted, steps with rising energy, largest relative rise rate).
+    void
+    write_summary(std::ostream &out) const;
+
+    /// Writes the counters into a checkpoint (keys `simulation/previous rate`, …).
+    void
+    save(CheckpointData &data) const;
+    /// Restores the counters from a checkpoint.
+    void
+    load(const CheckpointData &data);
+
+  private:
+    double energy_tolerance;
+
+    /// rise/τ of the last rejected step (0 after an accepted one).
+    double previous_rate = 0;
+    /// τ of the first step of the current run of rejections.
+    double tau_before_rejections = 0;
+    /// Steps accepted with a warning.
+    unsigned int n_energy_rises = 0;
+    /// Accepted steps on which F rose above its rounding, and their largest relative rate rise/(τ|F|).
+    unsigned int n_rising_steps = 0;
+    double       max_rise_rate  = 0;
+  };
+} // namespace FluidSurface
+
+#endif

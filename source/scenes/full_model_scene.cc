@@ -1,0 +1,343 @@
+#include <deal.II/base/utilities.h>
+
+#include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/io/run_stopped.h>
+#include <fluid_surface/io/stop_signals.h>
+#include <fluid_surface/scenes/full_model_scene.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace FluidSurface
+{
+  using namespace dealii;
+
+  FullModelScene::FullModelScene(const MPI_Comm            communicator,
+                                 SurfaceGeometry          &geometry,
+                                 OutputWriter             &output,
+                                 StatisticsFile           &statistics,
+                                 const ConditionalOStream &pcout,
+                                 const Timer              &wall_timer)
+    : communicator(communicator)
+    , geometry(geometry)
+    , output(output)
+    , statistics(statistics)
+    , pcout(pcout)
+    , wall_timer(wall_timer)
+    , computing_timer(this->pcout, TimerOutput::never, TimerOutput::wall_times)
+    , model(geometry)
+  {}
+
+  void
+  FullModelScene::parse_parameters(ParameterHandler &prm)
+  {
+    time.parse_parameters(prm);
+    energy_control = EnergyStepController(time.energy_tolerance());
+    model.parse_parameters(prm);
+    diagnostics.parse_parameters(prm);
+    checkpoint.parse_parameters(prm);
+  }
+
+  bool
+  FullModelScene::find_checkpoint()
+  {
+    checkpoint.initialize(output.directory() + "checkpoint/", communicator);
+    resuming = checkpoint.find(pcout.get_stream());
+    return resuming;
+  }
+
+  void
+  FullModelScene::run()
+  {
+    if (!resuming)
+      checkpoint.clear();
+    model.set_timer(computing_timer);
+    // The timing is written however the run ends (a failed run's timing shows where it spent its time),
+    // and the factorization kept across steps is freed.
+    struct TimingAtExit
+    {
+      FullModelScene &scene;
+      ~TimingAtExit()
+      {
+        scene.model.release_factorization();
+        try
+          {
+            scene.write_timing();
+          }
+        catch (...)
+          {}
+      }
+    } timing_at_exit{*this};
+
+    if (resuming)
+      resume_from_checkpoint();
+    else
+      set_up_initial_state();
+
+    const StopSignals stop_signals(communicator);
+    steps_this_run       = 0;
+    last_checkpoint_step = resuming ? time.step_number() : numbers::invalid_unsigned_int;
+    while (time.before_end())
+      {
+        const double                             tau  = time.step_size();
+        const FluidDeformableSurface::StepResult step = model.advance(tau);
+        if (!step.solved)
+          {
+            model.restore_last_state();
+            time.reject(step.failure);
+            continue;
+          }
+
+        computing_timer.enter_subsection("curvature and energy");
+        const double new_willmore = geometry.compute_curvature();
+        const double new_energy   = (model.has_inertia() ? model.kinetic_energy(model.candidate_solution()) : 0.0) +
+                                  model.bending_energy(new_willmore);
+        computing_timer.leave_subsection("curvature and energy");
+
+        const EnergyStepController::Decision energy = energy_control.decide(total_energy, new_energy, tau);
+        if (energy.verdict == EnergyStepController::Verdict::reject)
+          {
+            model.restore_last_state();
+            time.reject(energy.reason);
+            continue;
+          }
+        if (energy.verdict == EnergyStepController::Verdict::accept_with_warning)
+          pcout << "    warning: energy rose by " << std::setprecision(3) << energy.rise << " at t = " << time.time()
+                << " at a rate that does not fall with τ (space discretization); step accepted" << std::endl;
+        if (energy.step_size)
+          time.set_step_size(*energy.step_size);
+
+        model.accept();
+        time.accept(tau);
+        willmore = new_willmore;
+        record_step(tau, step);
+        check_mesh_quality();
+        if (output.due(time.time()) || !time.before_end())
+          write_output();
+        ++steps_this_run;
+        checkpoint_or_stop(stop_signals.received());
+      }
+    // A final checkpoint lets a finished run be extended (a later end time, resume = auto).
+    if (checkpoint.enabled() && last_checkpoint_step != time.step_number())
+      write_checkpoint();
+
+    diagnostics.compare_with_mean_rotation(geometry);
+    write_summary();
+  }
+
+  void
+  FullModelScene::set_up_initial_state()
+  {
+    model.setup();
+    pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ"
+          << (model.has_inertia() ? "" : " (Stokes limit: + 6 rigid-motion multipliers)") << std::endl;
+    std::ostringstream report;
+    diagnostics.set_reference(diagnostics.evaluate(geometry, model.dof_handler(), model.solution()),
+                              model.bending_number(),
+                              report);
+    pcout << report.str() << std::flush;
+    willmore = geometry.compute_curvature();
+    record_step(0.0, FluidDeformableSurface::StepResult());
+    write_output();
+  }
+
+  void
+  FullModelScene::resume_from_checkpoint()
+  {
+    const CheckpointData data = checkpoint.read();
+    if (data.get_string("simulation/geometry") != geometry.description())
+      throw InputError((parameter_file_name().empty() ? std::string("parameters") : parameter_file_name()) +
+                       ": the checkpoint " + checkpoint.last_slot() + " was written for the geometry '" +
+                       data.get_string("simulation/geometry") + "', the parameter file describes '" +
+                       geometry.description() + "'; expected the geometry of the run to resume, or resume = false.");
+    model.load(data);
+    time.load(data);
+    diagnostics.load(data);
+    output.load(data, communicator);
+    statistics.resume(output.directory() + "statistics", Utilities::MPI::this_mpi_process(communicator), data);
+    total_energy = data.get_double("simulation/total energy");
+    energy_control.load(data);
+    wall_time_before_restart = data.get_double("simulation/wall time");
+    willmore                 = geometry.compute_curvature();
+    // The restored fields must reproduce the energy recorded with them (to rounding: the rank count may differ).
+    const double energy = model.kinetic_energy() + model.bending_energy(willmore);
+    if (!(std::abs(energy - total_energy) <= 1e-10 * std::abs(total_energy)))
+      {
+        std::ostringstream msg;
+        msg << "the checkpoint " << checkpoint.last_slot() << " does not reproduce its total energy ("
+            << std::setprecision(17) << total_energy << " recorded, " << energy << " from its fields)";
+        throw std::runtime_error(msg.str());
+      }
+    std::ostringstream report;
+    diagnostics.set_reference(diagnostics.initial_values(), model.bending_number(), report);
+    pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ"
+          << (model.has_inertia() ? "" : " (Stokes limit: + 6 rigid-motion multipliers)") << '\n'
+          << report.str() << "-- resumed from " << checkpoint.last_slot() << ": step " << time.step_number()
+          << ", t = " << time.time() << std::endl;
+  }
+
+  void
+  FullModelScene::record_step(const double tau, const FluidDeformableSurface::StepResult &step)
+  {
+    TimerOutput::Scope        section(computing_timer, "diagnostics");
+    const Diagnostics::Values v = diagnostics.evaluate(geometry, model.dof_handler(), model.solution());
+    diagnostics.record(v, time.time(), tau);
+    const double bending_energy = model.bending_energy(willmore);
+    // The Stokes limit has no kinetic energy: F is the bending energy alone.
+    total_energy = (model.has_inertia() ? v.kinetic_energy : 0.0) + bending_energy;
+
+    statistics.add_value("time step", time.step_number());
+    statistics.add_value("time", time.time());
+    statistics.add_value("tau", tau);
+    statistics.add_value("kinetic energy", v.kinetic_energy);
+    statistics.add_value("bending energy", bending_energy);
+    statistics.add_value("total energy", total_energy);
+    statistics.add_value("dissipation rate", step.dissipation_rate);
+    diagnostics.add_to_statistics(v, statistics);
+    statistics.add_value("volume multiplier", step.gamma);
+    statistics.add_value("linear iterations", step.linear_iterations);
+    statistics.add_value("factorized", step.factorized ? 1 : 0);
+    statistics.add_value("rigid multiplier", step.rigid_force);
+    statistics.add_value("wall time", elapsed_wall_time());
+    statistics.end_row();
+
+    if (time.step_number() % output.screen_interval() == 0 || !time.before_end())
+      {
+        const double elapsed  = elapsed_wall_time();
+        const double per_step = time.step_number() > 0 ? elapsed / time.step_number() : 0.0;
+        const double eta      = time.time() > 0 ? elapsed * (time.final_time() - time.time()) / time.time() : 0.0;
+        pcout << "*** Step " << time.step_number() << "  t = " << std::setprecision(5) << time.time()
+              << "  τ = " << std::setprecision(3) << tau << "  (" << time.n_rejected_steps() << " rejected so far)\n"
+              << std::setprecision(8) << "    F = " << total_energy << " (kin " << v.kinetic_energy << ", bend "
+              << bending_energy << ")  ω = " << std::setprecision(5) << v.angular_velocity
+              << "  |∫u| = " << v.linear_momentum.norm() << '\n'
+              << std::setprecision(2) << std::scientific << "    ΔA/A = " << diagnostics.max_area_drift()
+              << "  ΔV/V = " << diagnostics.max_volume_drift()
+              << "  ΔL/L = " << diagnostics.max_angular_momentum_drift() << "  e(λ) = " << v.symmetry_deviation
+              << "  mesh quality " << std::fixed << v.mesh_quality << std::defaultfloat << '\n';
+        if (diagnostics.reference() != nullptr)
+          pcout << std::setprecision(3) << std::scientific << "    E(L2) = " << v.l2_distance << " (axial "
+                << v.l2_distance_axial << ", equatorial " << v.l2_distance_equatorial << ")" << std::defaultfloat
+                << '\n';
+        if (output.report_wall_time())
+          pcout << "    " << std::setprecision(3) << per_step << " s/step, ETA " << static_cast<long>(eta) << " s\n";
+        pcout << std::flush;
+      }
+  }
+
+  void
+  FullModelScene::check_mesh_quality() const
+  {
+    const double quality = geometry.measure().mesh_quality;
+    if (quality < model.mesh_quality_floor())
+      {
+        std::ostringstream msg;
+        msg << "mesh quality " << quality << " fell below the 'mesh quality floor' " << model.mesh_quality_floor()
+            << " at t = " << time.time() << "; the output up to the previous step is intact";
+        throw std::runtime_error(msg.str());
+      }
+  }
+
+  void
+  FullModelScene::write_output()
+  {
+    TimerOutput::Scope section(computing_timer, "output");
+    output.write(geometry, time.time(), [&](DataOut<2, 3> &data_out) { model.add_output_fields(data_out); });
+  }
+
+  bool
+  FullModelScene::write_checkpoint()
+  {
+    CheckpointData data;
+    data.set("simulation/geometry", geometry.description());
+    data.set("simulation/total energy", total_energy);
+    energy_control.save(data);
+    data.set("simulation/wall time", elapsed_wall_time());
+    model.save(data);
+    time.save(data);
+    diagnostics.save(data);
+    output.save(data);
+    statistics.save(data);
+    return checkpoint.write(data, time.step_number(), time.time(), pcout.get_stream());
+  }
+
+  void
+  FullModelScene::checkpoint_or_stop(const int signal)
+  {
+    const bool stop = time.before_end() && (signal != 0 || (checkpoint.steps_per_run() > 0 &&
+                                                            steps_this_run >= checkpoint.steps_per_run()));
+    bool       written = false;
+    if (stop || (checkpoint.enabled() && checkpoint.due(time.step_number())))
+      {
+        written = write_checkpoint();
+        if (written)
+          last_checkpoint_step = time.step_number();
+        // A resumed run starts without the factorization kept across steps; dropping it here too
+        // makes the step after a checkpoint factorize in both, so that they agree bit for bit.
+        model.release_factorization();
+      }
+    if (!stop)
+      return;
+    std::ostringstream msg;
+    msg << (signal == SIGINT ? "interrupted (SIGINT)" : signal != 0 ? "terminated (SIGTERM)" :
+                                                                       "stopped after 'steps per run'")
+        << " at step " << time.step_number() << ", t = " << time.time() << "; ";
+    if (written)
+      msg << "checkpoint written to " << checkpoint.last_slot()
+          << "; continue with 'set resume = auto' in subsection checkpoint";
+    else
+      msg << "the checkpoint could not be written"
+          << (checkpoint.last_slot().empty() ? std::string() : "; the last good one is " + checkpoint.last_slot());
+    throw RunStopped(msg.str(), signal != 0 ? 128 + signal : (written ? 0 : 1));
+  }
+
+  void
+  FullModelScene::write_summary() const
+  {
+    if (Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+    std::ostringstream text;
+    diagnostics.write_summary(text, total_energy, time.step_number(), time.n_rejected_steps(), elapsed_wall_time());
+    energy_control.write_summary(text);
+    text << "LU factorizations: " << model.n_factorizations() << '\n';
+    {
+      std::ofstream summary(output.directory() + "summary.tmp");
+      summary << text.str();
+    }
+    std::filesystem::rename(output.directory() + "summary.tmp", output.directory() + "summary");
+    std::istringstream lines(text.str());
+    pcout << "--- summary\n";
+    for (std::string line; std::getline(lines, line);)
+      if (output.report_wall_time() || line.rfind("wall time", 0) != 0)
+        pcout << line << '\n';
+    pcout << std::flush;
+  }
+
+  void
+  FullModelScene::write_timing()
+  {
+    const auto   wall  = computing_timer.get_summary_data(TimerOutput::total_wall_time);
+    const auto   calls = computing_timer.get_summary_data(TimerOutput::n_calls);
+    const double total = wall_timer.wall_time();
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::ofstream file(output.directory() + "timing");
+        file << "# section, calls, wall time [s], share of the run, wall time per accepted step [s]\n"
+             << "# run: " << total << " s, " << time.step_number() << " accepted steps, " << time.n_rejected_steps()
+             << " rejected, " << model.n_factorizations() << " LU factorizations\n";
+        for (const auto &entry : wall)
+          file << '"' << entry.first << "\", " << calls.at(entry.first) << ", " << entry.second << ", "
+               << entry.second / total << ", " << entry.second / std::max(1u, time.step_number()) << '\n';
+      }
+    if (output.report_wall_time())
+      {
+        pcout << "--- wall time per section (" << std::setprecision(4) << total / std::max(1u, time.step_number())
+              << " s per accepted step, " << model.n_factorizations() << " LU factorizations in "
+              << time.step_number() + time.n_rejected_steps() << " step attempts)\n";
+        computing_timer.print_summary();
+      }
+  }
+} // namespace FluidSurface

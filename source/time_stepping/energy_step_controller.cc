@@ -1,0 +1,92 @@
+#include <fluid_surface/io/checkpoint.h>
+#include <fluid_surface/time_stepping/energy_step_controller.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace FluidSurface
+{
+  EnergyStepController::EnergyStepController(const double energy_tolerance)
+    : energy_tolerance(energy_tolerance)
+  {}
+
+  bool
+  EnergyStepController::acceptable(const double old_energy, const double new_energy, const double tau) const
+  {
+    // The 1e-9 floor is the level at which F is computed reliably (solver and quadrature rounding).
+    return std::isfinite(new_energy) &&
+           new_energy <= old_energy + (energy_tolerance * tau + 1e-9) * std::abs(old_energy);
+  }
+
+  EnergyStepController::Decision
+  EnergyStepController::decide(const double old_energy, const double new_energy, const double tau)
+  {
+    Decision decision;
+    decision.rise = new_energy - old_energy;
+    const double rise = decision.rise;
+    if (!acceptable(old_energy, new_energy, tau))
+      {
+        // A rise whose rate rise/τ does not fall when τ is halved is a space-discretization
+        // effect that no step size removes: accept it and count it, unless it exceeds 1e-3 F
+        // in one step (then the run stops once τ < τ_min).
+        const double rate = rise / tau;
+        if (!(std::isfinite(rise) && previous_rate > 0 && rate > 0.5 * previous_rate &&
+              rise < 1e-3 * std::abs(old_energy)))
+          {
+            if (previous_rate == 0)
+              tau_before_rejections = tau;
+            previous_rate = rate;
+            std::ostringstream reason;
+            reason << "energy " << std::setprecision(10) << old_energy << " → " << new_energy;
+            decision.verdict = Verdict::reject;
+            decision.reason  = reason.str();
+            return decision;
+          }
+        ++n_energy_rises;
+        decision.verdict   = Verdict::accept_with_warning;
+        decision.step_size = tau_before_rejections;
+      }
+    else if (previous_rate > 0 && rise > 0 && rise / tau > 0.5 * previous_rate)
+      // The retry after a rejection passed, but its rise rate rise/τ hardly fell with τ: the rejection
+      // did not remove a time-step error, so τ returns to its value before the rejections (otherwise
+      // a steady rise rate just below the tolerance shrinks τ towards τ_min, one rejection at a time).
+      decision.step_size = tau_before_rejections;
+    previous_rate = 0;
+    if (rise > 1e-11 * std::abs(old_energy)) // above the rounding of F
+      {
+        ++n_rising_steps;
+        max_rise_rate = std::max(max_rise_rate, rise / (tau * std::abs(old_energy)));
+      }
+    return decision;
+  }
+
+  void
+  EnergyStepController::write_summary(std::ostream &out) const
+  {
+    out << "energy rises accepted: " << n_energy_rises << '\n';
+    out << "steps with rising energy: " << n_rising_steps << '\n';
+    out << "max relative energy rise rate: " << std::setprecision(3) << max_rise_rate << '\n';
+  }
+
+  void
+  EnergyStepController::save(CheckpointData &data) const
+  {
+    data.set("simulation/previous rate", previous_rate);
+    data.set("simulation/tau before rejections", tau_before_rejections);
+    data.set("simulation/energy rises", n_energy_rises);
+    data.set("simulation/rising steps", n_rising_steps);
+    data.set("simulation/max rise rate", max_rise_rate);
+  }
+
+  void
+  EnergyStepController::load(const CheckpointData &data)
+  {
+    previous_rate         = data.get_double("simulation/previous rate");
+    tau_before_rejections = data.get_double("simulation/tau before rejections");
+    n_energy_rises        = data.get_unsigned("simulation/energy rises");
+    n_rising_steps        = data.get_unsigned("simulation/rising steps");
+    max_rise_rate         = data.get_double("simulation/max rise rate");
+  }
+} // namespace FluidSurface
