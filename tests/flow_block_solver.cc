@@ -19,8 +19,8 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::vector<std::pair<std::string, FlowTest::Overrides>> variants = {
     {"Q2 node frames (default)", {}},
-    {"Q2 Cartesian", {{"flow/velocity AMG node frames", "false"}}},
-    {"low-order refined node frames", {{"flow/velocity AMG operator", "low-order refined"}}}};
+    {"Q2 Cartesian", {{"fixed surface solver/velocity AMG node frames", "false"}}},
+    {"low-order refined node frames", {{"fixed surface solver/velocity AMG operator", "low-order refined"}}}};
   const unsigned int bound[] = {35, 50, 45};
   for (unsigned int v = 0; v < variants.size(); ++v)
     {
@@ -31,7 +31,7 @@ main(int argc, char **argv)
                                               {"geometry/refinement", std::to_string(r)},
                                               {"fixed surface/problem", "manufactured sphere"}};
           FlowTest::Overrides block = common;
-          block.push_back({"flow/linear solver", "block preconditioned"});
+          block.push_back({"fixed surface solver/linear solver", "block preconditioned"});
           block.insert(block.end(), variants[v].second.begin(), variants[v].second.end());
           const auto direct = FlowTest::run(common);
           const auto krylov = FlowTest::run(block);
@@ -57,7 +57,7 @@ main(int argc, char **argv)
                                          {"fixed surface/problem", "decaying mode"},
                                          {"flow/Re", "10"},
                                          {"flow/convection", "false"},
-                                         {"flow/linear solver", "block preconditioned"},
+                                         {"fixed surface solver/linear solver", "block preconditioned"},
                                          {"time stepping/time step", "0.05"},
                                          {"time stepping/end time", "0.5"}});
       if (FlowTest::is_root())

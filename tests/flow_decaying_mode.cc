@@ -26,7 +26,7 @@ main(int argc, char **argv)
                                      {"geometry/refinement", "2"},
                                      {"fixed surface/problem", "decaying mode"},
                                      {"flow/Re", "10"},
-                                     {"flow/linear solver", "block preconditioned"},
+                                     {"fixed surface solver/linear solver", "block preconditioned"},
                                      {"time stepping/time step", "0.05"},
                                      {"time stepping/end time", "1"}});
   if (FlowTest::is_root())

@@ -14,7 +14,7 @@ main(int argc, char **argv)
                                          {"geometry/refinement", std::to_string(r)},
                                          {"fixed surface/problem", "killing"},
                                          {"flow/Re", "10"},
-                                         {"flow/penalty factor", "1000"},
+                                         {"fixed surface solver/penalty factor", "1000"},
                                          {"time stepping/time step", "0.05"},
                                          {"time stepping/end time", "1"}});
       if (FlowTest::is_root())

@@ -18,8 +18,8 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::vector<std::pair<std::string, FlowTest::Overrides>> variants = {
     {"penalty", {}},
-    {"Q1 multiplier", {{"flow/tangentiality", "multiplier"}, {"flow/multiplier degree", "1"}}},
-    {"Q2 multiplier", {{"flow/tangentiality", "multiplier"}, {"flow/multiplier degree", "2"}}}};
+    {"Q1 multiplier", {{"fixed surface solver/tangentiality", "multiplier"}, {"fixed surface solver/multiplier degree", "1"}}},
+    {"Q2 multiplier", {{"fixed surface solver/tangentiality", "multiplier"}, {"fixed surface solver/multiplier degree", "2"}}}};
   std::vector<std::vector<FluidSurface::FixedSurfaceScene::Results>> results(variants.size());
   for (unsigned int v = 0; v < variants.size(); ++v)
     for (unsigned int r = 2; r <= 3; ++r)
@@ -64,8 +64,8 @@ main(int argc, char **argv)
     {
       FlowTest::run({{"geometry/shape", "sphere"},
                      {"geometry/refinement", "1"},
-                     {"flow/tangentiality", "multiplier"},
-                     {"flow/linear solver", "block preconditioned"}});
+                     {"fixed surface solver/tangentiality", "multiplier"},
+                     {"fixed surface solver/linear solver", "block preconditioned"}});
       if (FlowTest::is_root())
         std::printf("multiplier with the block preconditioner: accepted (wrong)\n");
     }

@@ -42,16 +42,16 @@ def record(case, settings, r):
     row = {"case": case, "problem": s.get("fixed surface/problem", "manufactured sphere"),
            "shape": s.get("geometry/shape", "sphere"), "k": s.get("geometry/position degree", "2"),
            "refinement": s["geometry/refinement"], "dofs": r["dofs"],
-           "solver": s.get("flow/linear solver", "direct") + ("" if s.get("flow/linear solver", "direct") != "direct"
+           "solver": s.get("fixed surface solver/linear solver", "direct") + ("" if s.get("fixed surface solver/linear solver", "direct") != "direct"
                                                              else " " + s.get("linear solver/direct solver", "Amesos_Klu")),
-           "scheme": s.get("flow/time scheme", "BDF2"), "convection": s.get("flow/convection", "true"),
+           "scheme": s.get("fixed surface solver/time scheme", "BDF2"), "convection": s.get("flow/convection", "true"),
            "Re": s.get("flow/Re", "1"),
-           "penalty factor": "" if s.get("flow/tangentiality") == "multiplier" else s.get("flow/penalty factor", "10"),
+           "penalty factor": "" if s.get("fixed surface solver/tangentiality") == "multiplier" else s.get("fixed surface solver/penalty factor", "10"),
            "tau": s.get("time stepping/time step", ""), "threads": s.get("threads", ""),
-           "aggregation threshold": s.get("flow/velocity AMG aggregation threshold", ""),
-           "velocity AMG": "" if s.get("flow/linear solver", "direct") == "direct" else
-                           s.get("flow/velocity AMG operator", "Q2") + ", " +
-                           ("node frames" if s.get("flow/velocity AMG node frames", "true") == "true" else "Cartesian")}
+           "aggregation threshold": s.get("fixed surface solver/velocity AMG aggregation threshold", ""),
+           "velocity AMG": "" if s.get("fixed surface solver/linear solver", "direct") == "direct" else
+                           s.get("fixed surface solver/velocity AMG operator", "Q2") + ", " +
+                           ("node frames" if s.get("fixed surface solver/velocity AMG node frames", "true") == "true" else "Cartesian")}
     for key, name in [("velocity", "velocity L2"), ("tangential", "tangential L2"), ("gradient", "gradient L2"),
                       ("pressure", "pressure L2"), ("normal", "normal L2")]:
         row[name] = r[key]
@@ -88,13 +88,13 @@ for k in (2, 3) if not multiplier_only else ():
     for solver in (("direct", "Amesos_Klu"), ("direct", "Amesos_Mumps"), ("block preconditioned", None)):
         for ref in range(1, max_ref + 1):
             s = {"geometry/shape": "sphere", "geometry/refinement": ref, "geometry/position degree": k,
-                 "flow/linear solver": solver[0]}
+                 "fixed surface solver/linear solver": solver[0]}
             if solver[1]:
                 s["linear solver/direct solver"] = solver[1]
             record("stationary solver", s, run(s))
 for ref in range(1, max_ref + 1) if not (solvers_only or multiplier_only) else ():
-    s = {"geometry/shape": "sphere", "geometry/refinement": ref, "flow/linear solver": "block preconditioned",
-         "flow/velocity AMG aggregation threshold": 0.02, "flow/velocity AMG node frames": "false"}
+    s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface solver/linear solver": "block preconditioned",
+         "fixed surface solver/velocity AMG aggregation threshold": 0.02, "fixed surface solver/velocity AMG node frames": "false"}
     record("stationary solver theta", s, run(s, 1 if ref == 5 else repeats))
 # 2a. Velocity AMG variants of the block preconditioner (the default, Q2 in node frames, is in section 2):
 #     Q2 in Cartesian components (the former default), and the low-order-refined operator in node frames
@@ -104,8 +104,8 @@ for k, variants in ((2, (("Q2", "false"), ("low-order refined", "true"), ("low-o
     for operator, frames in variants:
         for ref in range(1, max_ref + 1):
             s = {"geometry/shape": "sphere", "geometry/refinement": ref, "geometry/position degree": k,
-                 "flow/linear solver": "block preconditioned", "flow/velocity AMG operator": operator,
-                 "flow/velocity AMG node frames": frames}
+                 "fixed surface solver/linear solver": "block preconditioned", "fixed surface solver/velocity AMG operator": operator,
+                 "fixed surface solver/velocity AMG node frames": frames}
             record("stationary solver amg", s, run(s))
 # 2b. Threads in assembly (WorkStream): the same stationary problem with 1 and 2 threads.
 for threads in (1, 2) if not multiplier_only else ():
@@ -114,8 +114,8 @@ for threads in (1, 2) if not multiplier_only else ():
     record("threads", {**s, "threads": threads}, r)
 # 3. Penalty choices (sphere, k = 2): exponent 2 vs 3, and the normal used.
 for ref in range(2, max_ref + 1) if not (solvers_only or multiplier_only) else ():
-    for extra in ({"flow/penalty exponent": 2}, {"flow/penalty normal": "continuous"}, {"flow/penalty normal": "cell"},
-                  {"flow/penalty factor": 1000}):
+    for extra in ({"fixed surface solver/penalty exponent": 2}, {"fixed surface solver/penalty normal": "continuous"}, {"fixed surface solver/penalty normal": "cell"},
+                  {"fixed surface solver/penalty factor": 1000}):
         s = {"geometry/shape": "sphere", "geometry/refinement": ref, **extra}
         r = run(s, 1)
         record("penalty " + ",".join(f"{k.split('/')[1]}={v}" for k, v in extra.items()), s, r)
@@ -123,18 +123,18 @@ for ref in range(2, max_ref + 1) if not (solvers_only or multiplier_only) else (
 for beta in (1000, 10) if not (solvers_only or multiplier_only) else ():
     for ref in range(2, (4 if quick else 5) + 1):
         s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface/problem": "killing",
-             "flow/Re": 10, "flow/penalty factor": beta, "time stepping/time step": 0.05, "time stepping/end time": 1}
+             "flow/Re": 10, "fixed surface solver/penalty factor": beta, "time stepping/time step": 0.05, "time stepping/end time": 1}
         record("killing", s, run(s, 1))
 # 4b. Tangentiality by a Lagrange multiplier λ ∈ Q1 or Q2 instead of the penalty (direct solver): stationary
 #     manufactured sphere (errors) and the Killing field (energy drift), k = 2.
 for d in (1, 2) if not solvers_only else ():
     for ref in range(2, max_ref + 1):
-        s = {"geometry/shape": "sphere", "geometry/refinement": ref, "flow/tangentiality": "multiplier",
-             "flow/multiplier degree": d}
+        s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface solver/tangentiality": "multiplier",
+             "fixed surface solver/multiplier degree": d}
         record(f"multiplier Q{d} stationary", s, run(s, 1))
     for ref in range(2, (4 if quick else 5) + 1):
         s = {"geometry/shape": "sphere", "geometry/refinement": ref, "fixed surface/problem": "killing",
-             "flow/Re": 10, "flow/tangentiality": "multiplier", "flow/multiplier degree": d,
+             "flow/Re": 10, "fixed surface solver/tangentiality": "multiplier", "fixed surface solver/multiplier degree": d,
              "time stepping/time step": 0.05, "time stepping/end time": 1}
         record(f"multiplier Q{d} killing", s, run(s, 1))
 # 5. Decaying modes l = 2, 3 with convection, Re = 10: h-convergence at tau = 0.0125, tau-convergence at ref 4.
@@ -148,13 +148,13 @@ for l in (2, 3) if not (solvers_only or multiplier_only) else ():
         for tau in (0.1, 0.05, 0.025) if not quick else (0.1, 0.05):
             s = {"geometry/shape": "sphere", "geometry/refinement": 3 if quick else 4,
                  "fixed surface/problem": "decaying mode", "fixed surface/mode number": l, "flow/Re": 10,
-                 "flow/time scheme": scheme, "time stepping/time step": tau, "time stepping/end time": 1}
+                 "fixed surface solver/time scheme": scheme, "time stepping/time step": tau, "time stepping/end time": 1}
             record(f"decay l={l} tau", s, run(s, 1))
 # 6. Time-dependent solvers (decaying mode l = 2, BDF2, tau = 0.05): direct with reuse, direct without, block.
 for ref in range(2, (3 if quick else 4) + 1) if not multiplier_only else ():
-    block = {"flow/linear solver": "block preconditioned"}
-    cartesian = {**block, "flow/velocity AMG node frames": "false"}
-    lor = {**block, "flow/velocity AMG operator": "low-order refined"}
+    block = {"fixed surface solver/linear solver": "block preconditioned"}
+    cartesian = {**block, "fixed surface solver/velocity AMG node frames": "false"}
+    lor = {**block, "fixed surface solver/velocity AMG operator": "low-order refined"}
     stokes = {"flow/convection": "false"}
     for extra in ({}, {"linear solver/reuse factorization": "false"}, block, cartesian, lor,
                   stokes, {**stokes, **block}, {**stokes, **cartesian}, {**stokes, **lor}):

@@ -13,10 +13,11 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <fluid_surface/linear_algebra/factorization_preconditioner.h>
-#include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/flow/energy_functionals.h>
 #include <fluid_surface/flow/surface_flow.h>
 #include <fluid_surface/geometry/surface_operators.h>
+#include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/linear_algebra/factorization_preconditioner.h>
 
 #include <limits>
 #include <map>
@@ -32,21 +33,7 @@ namespace FluidSurface
   void
   SurfaceFlow::Parameters::declare(ParameterHandler &prm)
   {
-    prm.enter_subsection("flow");
-    prm.declare_entry("Re",
-                      "1",
-                      Patterns::Double(0, Patterns::Double::max_double_value),
-                      "Reynolds number Re = ρUL/μ; the viscous stress is (2/Re)σ(u).");
-    prm.declare_entry("inertia",
-                      "true",
-                      Patterns::Bool(),
-                      "Time derivative ∂_t u on (Navier–Stokes or time-dependent Stokes) or off "
-                      "(stationary Stokes limit; the mass and convection terms are not assembled).");
-    prm.declare_entry("convection",
-                      "true",
-                      Patterns::Bool(),
-                      "Convection ∇_w u on or off (with inertia only); skew-symmetric form "
-                      "½[(∇_w u, v) − (∇_w v, u)], w extrapolated from the old steps.");
+    prm.enter_subsection("fixed surface solver");
     prm.declare_entry("time scheme",
                       "BDF2",
                       Patterns::Selection("BDF1|BDF2"),
@@ -122,13 +109,13 @@ namespace FluidSurface
   }
 
   void
-  SurfaceFlow::Parameters::parse(ParameterHandler &prm)
+  SurfaceFlow::Parameters::parse(ParameterHandler &prm, const SurfaceFluid &fluid)
   {
-    prm.enter_subsection("flow");
-    Re         = prm.get_double("Re");
-    inertia    = prm.get_bool("inertia");
-    convection = prm.get_bool("convection");
-    scheme     = prm.get("time scheme") == "BDF1" ? TimeScheme::bdf1 : TimeScheme::bdf2;
+    Re         = fluid.Re;
+    inertia    = fluid.inertia;
+    convection = fluid.convection;
+    prm.enter_subsection("fixed surface solver");
+    scheme = prm.get("time scheme") == "BDF1" ? TimeScheme::bdf1 : TimeScheme::bdf2;
     const std::string normal = prm.get("penalty normal");
     penalty_normal   = normal == "exact" ? PenaltyNormal::exact :
                        normal == "continuous" ? PenaltyNormal::continuous : PenaltyNormal::cell;
@@ -143,12 +130,10 @@ namespace FluidSurface
                                                               VelocityAMGOperator::low_order_refined;
     amg_node_frames = prm.get_bool("velocity AMG node frames");
     max_iterations       = prm.get_integer("max linear iterations");
-    if (!(Re > 0))
-      throw_invalid_entry("flow/Re", prm.get("Re"), "a positive Reynolds number");
     if (!(penalty_factor > 0))
-      throw_invalid_entry("flow/penalty factor", prm.get("penalty factor"), "a positive β");
+      throw_invalid_entry("fixed surface solver/penalty factor", prm.get("penalty factor"), "a positive β");
     if (tangentiality == Tangentiality::multiplier && solver != LinearSolver::direct)
-      throw_invalid_entry("flow/tangentiality",
+      throw_invalid_entry("fixed surface solver/tangentiality",
                           "multiplier",
                           "penalty: the multiplier is implemented for `linear solver = direct` only, not for "
                           "block preconditioned");
@@ -162,17 +147,7 @@ namespace FluidSurface
     Parameters::declare(prm);
   }
 
-  void
-  SurfaceFlow::parse_parameters(ParameterHandler &prm)
-  {
-    parameters.parse(prm);
-  }
-
   // ---------------------------------------------------------------- setup
-
-  SurfaceFlow::SurfaceFlow(const SurfaceGeometry &geometry)
-    : SurfaceFlow(geometry, Parameters())
-  {}
 
   namespace
   {
@@ -201,6 +176,9 @@ namespace FluidSurface
     , flow_dofs(geometry.triangulation())
     , linear_solver("Amesos_Klu", parameters.linear_solver) // `direct solver = default` of this scene
   {
+    fluid.Re         = parameters.Re;
+    fluid.inertia    = parameters.inertia;
+    fluid.convection = parameters.convection;
     // Sub-cell s = (s_x, s_y) of the reference cell holds the nodes and quadrature points with
     // coordinates in [s_x/2, (s_x+1)/2] × [s_y/2, (s_y+1)/2]; its 4 nodes carry 12 velocity DoFs.
     const std::vector<Point<2>> &nodes  = fe.base_element(0).get_unit_support_points();
@@ -281,11 +259,11 @@ namespace FluidSurface
   SurfaceFlow::setup(const std::vector<Tensor<1, 3>> &killing_axes)
   {
     if ((parameters.tangentiality == Tangentiality::multiplier) != (fe.n_components() == 5))
-      throw InputError("flow/tangentiality was changed after the flow solver was created; parse the parameters "
-                       "before constructing SurfaceFlow");
+      throw InputError("fixed surface solver/tangentiality was changed after the flow solver was created; parse "
+                       "the parameters before constructing SurfaceFlow");
     if (parameters.penalty_normal == PenaltyNormal::exact && !exact_normal)
-      throw InputError("flow/penalty normal = exact needs the normal of an analytic surface; this scene has "
-                       "none (use continuous or cell)");
+      throw InputError("fixed surface solver/penalty normal = exact needs the normal of an analytic surface; "
+                       "this scene has none (use continuous or cell)");
     killing = killing_axes;
     flow_dofs.distribute_dofs(fe);
     // Velocity block first; inside it the three components of a node stay adjacent, as ML's
@@ -469,11 +447,9 @@ namespace FluidSurface
                             Quadrature<2>(flow_fe.base_element(0).base_element(0).get_unit_support_points()),
                             update_values | update_quadrature_points)
       , lor_normal(lor_geometry_values.n_quadrature_points)
+      , point(flow_fe.n_dofs_per_cell())
       , phi(flow_fe.n_dofs_per_cell())
-      , grad_phi(flow_fe.n_dofs_per_cell())
       , sigma(flow_fe.n_dofs_per_cell())
-      , div_phi(flow_fe.n_dofs_per_cell())
-      , psi(flow_fe.n_dofs_per_cell())
       , grad_psi(flow_fe.n_dofs_per_cell())
       , normal_phi(flow_fe.n_dofs_per_cell())
       , multiplier(flow_fe.n_dofs_per_cell())
@@ -495,12 +471,10 @@ namespace FluidSurface
     FEValues<2, 3>            lor_values;          ///< low-order-refined velocity operator
     FEValues<2, 3>            lor_geometry_values; ///< ñ at the 9 nodes of the cell
     std::vector<Tensor<1, 3>> lor_normal;
-    std::vector<Tensor<1, 3>> phi;
-    std::vector<Tensor<2, 3>> grad_phi;
-    std::vector<Tensor<2, 3>> sigma;
-    std::vector<double>       div_phi;
-    std::vector<double>       psi;
-    std::vector<Tensor<1, 3>> grad_psi;
+    FlowPointValues           point;      ///< the flow terms' data at one quadrature point
+    std::vector<Tensor<1, 3>> phi;        ///< velocity shape values on a sub-cell (low-order refined)
+    std::vector<Tensor<2, 3>> sigma;      ///< their σ
+    std::vector<Tensor<1, 3>> grad_psi;   ///< pressure gradients (the L_p of the preconditioner)
     std::vector<double>       normal_phi;
     std::vector<double>       multiplier; ///< shape values of λ (Tangentiality::multiplier)
     std::vector<Tensor<1, 3>> old_u, older_u, smooth_normal;
@@ -552,7 +526,6 @@ namespace FluidSurface
     const FEValuesExtractors::Scalar pressure(3);
     const unsigned int               n      = fe.n_dofs_per_cell();
     const unsigned int               n_q    = fv.n_quadrature_points;
-    const double                     Re     = parameters.Re;
     const double                     tau    = current_tau;
     const std::array<double, 3>      bdf    = bdf_coefficients(parameters.scheme, n_steps_done);
     const bool                       build_preconditioner =
@@ -589,11 +562,12 @@ namespace FluidSurface
     const double penalty =
       with_multiplier ? 0.0 : parameters.penalty_factor * std::pow(cell_area, -0.5 * parameters.penalty_exponent);
 
+    FlowPointValues &point = scratch.point;
     for (unsigned int q = 0; q < n_q; ++q)
       {
-        const double        dA = fv.JxW(q);
-        const Point<3>     &x  = fv.quadrature_point(q);
-        const Tensor<1, 3> &nu = fv.normal_vector(q);
+        point.reinit(fv, q);
+        const double        dA = point.JxW;
+        const Point<3>     &x  = point.position;
         Tensor<1, 3>        n_penalty;
         switch (parameters.penalty_normal)
           {
@@ -604,16 +578,15 @@ namespace FluidSurface
               n_penalty = scratch.smooth_normal[q] / scratch.smooth_normal[q].norm();
               break;
             case PenaltyNormal::cell:
-              n_penalty = nu;
+              n_penalty = point.normal;
               break;
           }
-
-        Tensor<1, 3> history, w;
         if (with_time_derivative)
           {
-            history = (bdf[1] * scratch.old_u[q] + bdf[2] * scratch.older_u[q]) / tau;
-            // Extrapolated convection velocity, second order with BDF2.
-            w = (bdf[2] == 0.0) ? scratch.old_u[q] : Tensor<1, 3>(2.0 * scratch.old_u[q] - scratch.older_u[q]);
+            // The BDF history β₁u^m + β₂u^{m−1} and the extrapolated convection velocity (second order with BDF2).
+            point.old_velocity = bdf[1] * scratch.old_u[q] + bdf[2] * scratch.older_u[q];
+            point.transport_velocity =
+              (bdf[2] == 0.0) ? scratch.old_u[q] : Tensor<1, 3>(2.0 * scratch.old_u[q] - scratch.older_u[q]);
           }
         Tensor<1, 3> force;
         if (body_force)
@@ -621,13 +594,8 @@ namespace FluidSurface
 
         for (unsigned int i = 0; i < n; ++i)
           {
-            scratch.phi[i]        = fv[velocity].value(i, q);
-            scratch.grad_phi[i]   = fv[velocity].gradient(i, q);
-            scratch.sigma[i]      = SO::strain_rate(scratch.grad_phi[i], nu);
-            scratch.div_phi[i]    = SO::surface_divergence(scratch.grad_phi[i]);
-            scratch.psi[i]        = fv[pressure].value(i, q);
             scratch.grad_psi[i]   = fv[pressure].gradient(i, q);
-            scratch.normal_phi[i] = SO::normal_component(scratch.phi[i], n_penalty);
+            scratch.normal_phi[i] = SO::normal_component(point.velocity[i], n_penalty);
             scratch.multiplier[i] = with_multiplier ? fv[FEValuesExtractors::Scalar(4)].value(i, q) : 0.0;
           }
 
@@ -635,37 +603,38 @@ namespace FluidSurface
           {
             const Tensor<1, 3> rotation = cross_product_3d(killing[a], x);
             for (unsigned int i = 0; i < n; ++i)
-              copy.killing_moments[a](i) += rotation * scratch.phi[i] * dA;
+              copy.killing_moments[a](i) += rotation * point.velocity[i] * dA;
           }
         for (unsigned int i = 0; i < n; ++i)
           {
-            copy.rhs(i) += (force + history) * scratch.phi[i] * dA;
+            copy.rhs(i) += force * point.velocity[i] * dA;
+            if (with_time_derivative)
+              copy.rhs(i) += SurfaceFluid::mass_term_rhs(point, i, 1.0 / tau) * dA;
             if (!copy.with_matrix)
               continue;
-            const Tensor<1, 3> grad_i_w = with_convection ? SO::convective_derivative(scratch.grad_phi[i], w) :
-                                                            Tensor<1, 3>();
             for (unsigned int j = 0; j < n; ++j)
               {
-                double velocity_block = (2.0 / Re) * scalar_product(scratch.sigma[i], scratch.sigma[j]) +
-                                        penalty * scratch.normal_phi[i] * scratch.normal_phi[j];
+                double velocity_block =
+                  fluid.viscous_term(point, i, j) + penalty * scratch.normal_phi[i] * scratch.normal_phi[j];
                 if (with_time_derivative)
-                  velocity_block += bdf[0] / tau * scratch.phi[i] * scratch.phi[j];
+                  velocity_block += SurfaceFluid::mass_term(point, i, j, bdf[0] / tau);
+                // The skew-symmetric form ½[(∇_w u, v) − (∇_w v, u)].
                 double convection = 0;
                 if (with_convection)
-                  convection = 0.5 * (SO::convective_derivative(scratch.grad_phi[j], w) * scratch.phi[i] -
-                                      grad_i_w * scratch.phi[j]);
-                copy.matrix(i, j) += (velocity_block + convection - scratch.div_phi[i] * scratch.psi[j] -
-                                      scratch.psi[i] * scratch.div_phi[j] +
+                  convection =
+                    0.5 * (SurfaceFluid::convection_term(point, i, j) - SurfaceFluid::convection_term(point, j, i));
+                copy.matrix(i, j) += (velocity_block + convection + SurfaceFluid::pressure_term(point, i, j) +
+                                      SurfaceFluid::continuity_term(point, i, j) +
                                       scratch.normal_phi[i] * scratch.multiplier[j] +
                                       scratch.multiplier[i] * scratch.normal_phi[j]) *
                                      dA;
                 if (build_preconditioner)
                   {
                     copy.velocity_and_pressure_mass(i, j) +=
-                      (velocity_block + scratch.psi[i] * scratch.psi[j]) * dA;
+                      (velocity_block + point.pressure[i] * point.pressure[j]) * dA;
                     if (with_time_derivative)
                       copy.pressure_laplace(i, j) += (scratch.grad_psi[i] * scratch.grad_psi[j] +
-                                                      1e-2 * scratch.psi[i] * scratch.psi[j]) *
+                                                      1e-2 * point.pressure[i] * point.pressure[j]) *
                                                      dA;
                   }
               }
@@ -674,8 +643,22 @@ namespace FluidSurface
 
     const bool lor = build_preconditioner && parameters.amg_operator == VelocityAMGOperator::low_order_refined;
     copy.with_lor  = lor;
-    if (!build_preconditioner || !(lor || parameters.amg_node_frames))
-      return;
+    if (build_preconditioner && (lor || parameters.amg_node_frames))
+      assemble_amg_matrices(cell, scratch, copy, penalty);
+  }
+
+  void
+  SurfaceFlow::assemble_amg_matrices(const typename DoFHandler<2, 3>::active_cell_iterator &cell,
+                                     ScratchData                                           &scratch,
+                                     CopyData                                              &copy,
+                                     const double                                           penalty) const
+  {
+    const FEValuesExtractors::Vector velocity(0);
+    const unsigned int               n   = fe.n_dofs_per_cell();
+    const double                     Re  = parameters.Re;
+    const double                     tau = current_tau;
+    const std::array<double, 3>      bdf = bdf_coefficients(parameters.scheme, n_steps_done);
+    const bool lor = parameters.amg_operator == VelocityAMGOperator::low_order_refined;
 
     // Node frames [t₁ t₂ n] (Cartesian at constrained nodes): the AMG sees the velocity block in
     // tangential and normal components, so the penalty, which acts on the normal component only,
@@ -1051,37 +1034,14 @@ namespace FluidSurface
   double
   SurfaceFlow::kinetic_energy() const
   {
-    const QGauss<2>           quadrature = geometry.quadrature();
-    FEValues<2, 3>            fv(geometry.mapping(), fe, quadrature, update_values | update_JxW_values);
-    std::vector<Tensor<1, 3>> u(quadrature.size());
-    double                    energy = 0;
-    for (const auto &cell : flow_dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fv.reinit(cell);
-          fv[FEValuesExtractors::Vector(0)].get_function_values(current, u);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            energy += 0.5 * u[q].norm_square() * fv.JxW(q);
-        }
-    return Utilities::MPI::sum(energy, communicator);
+    return EnergyFunctionals::kinetic_energy(geometry.mapping(), flow_dofs, current, geometry.quadrature(), communicator);
   }
 
   double
   SurfaceFlow::dissipation_rate() const
   {
-    const QGauss<2>           quadrature = geometry.quadrature();
-    FEValues<2, 3>            fv(geometry.mapping(), fe, quadrature, update_gradients | update_normal_vectors | update_JxW_values);
-    std::vector<Tensor<2, 3>> G(quadrature.size());
-    double                    rate = 0;
-    for (const auto &cell : flow_dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fv.reinit(cell);
-          fv[FEValuesExtractors::Vector(0)].get_function_gradients(current, G);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            rate += (2.0 / parameters.Re) * SO::strain_rate(G[q], fv.normal_vector(q)).norm_square() * fv.JxW(q);
-        }
-    return Utilities::MPI::sum(rate, communicator);
+    return EnergyFunctionals::dissipation_rate(
+      geometry.mapping(), flow_dofs, current, geometry.quadrature(), parameters.Re, communicator);
   }
 
   SurfaceFlow::Errors

@@ -14,6 +14,66 @@ namespace FluidSurface
   {
     std::string current_parameter_file;
 
+    /// An entry that a parameter file sets: "subsection/entry" and the line of its `set`.
+    struct EntrySetInFile
+    {
+      std::string  path;
+      unsigned int line;
+    };
+    /// The entries the last file read by parse_parameter_file() sets (its included files not followed).
+    std::vector<EntrySetInFile> entries_set_in_file;
+
+    std::string
+    trim(const std::string &text)
+    {
+      const auto first = text.find_first_not_of(" \t\r");
+      if (first == std::string::npos)
+        return "";
+      return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
+    }
+
+    /// The `set` lines of @p filename with their subsection paths, as ParameterHandler reads them
+    /// (comments after #, lines continued by a trailing backslash).
+    std::vector<EntrySetInFile>
+    scan_entries_set(const std::string &filename)
+    {
+      std::vector<EntrySetInFile> entries;
+      std::vector<std::string>    subsections;
+      std::ifstream               in(filename);
+      std::string                 line, logical;
+      unsigned int                number = 0, first_line = 0;
+      while (std::getline(in, line))
+        {
+          ++number;
+          if (logical.empty())
+            first_line = number;
+          line = trim(line.substr(0, line.find('#')));
+          if (!line.empty() && line.back() == '\\')
+            {
+              logical += line.substr(0, line.size() - 1) + ' ';
+              continue;
+            }
+          logical += line;
+          std::istringstream words(logical);
+          std::string        keyword;
+          words >> keyword;
+          if (keyword == "subsection")
+            subsections.push_back(trim(logical.substr(keyword.size())));
+          else if (keyword == "end" && !subsections.empty())
+            subsections.pop_back();
+          else if (keyword == "set")
+            {
+              std::string path;
+              for (const std::string &subsection : subsections)
+                path += subsection + '/';
+              const std::string assignment = logical.substr(keyword.size());
+              entries.push_back({path + trim(assignment.substr(0, assignment.find('='))), first_line});
+            }
+          logical.clear();
+        }
+      return entries;
+    }
+
     /// The message of a deal.II exception without its source location block.
     std::string
     exception_message(const dealii::ExceptionBase &exc)
@@ -123,6 +183,7 @@ namespace FluidSurface
     try
       {
         prm.parse_input(filename, "", /*skip_undefined=*/false, /*assert_mandatory_entries_are_found=*/false);
+        entries_set_in_file = scan_entries_set(filename);
       }
     catch (const dealii::ExceptionBase &exc)
       {
@@ -138,6 +199,22 @@ namespace FluidSurface
       {
         throw InputError(filename + ": " + exc.what());
       }
+  }
+
+  void
+  reject_entries_unused_by_scene(const std::vector<std::string> &unused, const std::string &scene)
+  {
+    for (const EntrySetInFile &entry : entries_set_in_file)
+      for (const std::string &pattern : unused)
+        {
+          const bool whole_subsection = pattern.size() > 1 && pattern.compare(pattern.size() - 2, 2, "/*") == 0;
+          const bool match            = whole_subsection ? entry.path.rfind(pattern.substr(0, pattern.size() - 1), 0) == 0 :
+                                                           entry.path == pattern;
+          if (match)
+            throw InputError(current_parameter_file + ", line " + std::to_string(entry.line) + ": entry '" +
+                             entry.path + "' is set, but scene " + scene +
+                             " does not use it; expected no such entry (remove it, or choose the scene that uses it).");
+        }
   }
 
   void

@@ -10,12 +10,13 @@
 #include <deal.II/numerics/data_postprocessor.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <fluid_surface/linear_algebra/bordered_system.h>
+#include <fluid_surface/flow/energy_functionals.h>
+#include <fluid_surface/geometry/surface_operators.h>
 #include <fluid_surface/io/checkpoint.h>
-#include <fluid_surface/model/fluid_deformable_surface.h>
 #include <fluid_surface/io/output_writer.h>
 #include <fluid_surface/io/parameter_file.h>
-#include <fluid_surface/geometry/surface_operators.h>
+#include <fluid_surface/linear_algebra/bordered_system.h>
+#include <fluid_surface/model/fluid_deformable_surface.h>
 
 #include <cmath>
 
@@ -23,105 +24,8 @@ namespace FluidSurface
 {
   using namespace dealii;
 
-  void
-  BendingForce::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("bending");
-    prm.declare_entry("enabled", "true", Patterns::Bool(), "Assemble the Helfrich bending force b.");
-    prm.declare_entry("Be",
-                      "1",
-                      Patterns::Double(0, Patterns::Double::max_double_value),
-                      "Bending capillary number Be = ρU²L²/κ_b; the bending energy is (1/2Be)∫H².");
-    prm.leave_subsection();
-  }
-
-  void
-  BendingForce::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("bending");
-    enabled        = prm.get_bool("enabled");
-    bending_number = prm.get_double("Be");
-    if (!(bending_number > 0))
-      throw_invalid_entry("bending/Be", prm.get("Be"), "a positive bending number Be");
-    prm.leave_subsection();
-  }
-
-  void
-  VolumeConstraint::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("volume constraint");
-    prm.declare_entry("enabled",
-                      "true",
-                      Patterns::Bool(),
-                      "Keep the enclosed volume V with the global multiplier γ: ∫u·ν = −(V − V₀)/τ_c.");
-    prm.declare_entry("drift correction time",
-                      "0.01",
-                      Patterns::Double(0),
-                      "τ_drift: volume and area drifts are returned at the rate (V − V₀)/τ_c with "
-                      "τ_c = max(τ_drift, τ_max) (τ_max = time stepping/maximum time step; likewise for the area "
-                      "through div_P u, and with `conserve momenta` the momenta by the fraction τ/τ_c per step). "
-                      "τ_c does not depend on the step τ, so a step retried with a smaller τ asks for a "
-                      "proportionally smaller correction.");
-    prm.leave_subsection();
-  }
-
-  void
-  VolumeConstraint::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("volume constraint");
-    enabled = prm.get_bool("enabled");
-    prm.leave_subsection();
-  }
-
-  void
-  MeshRedistribution::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("mesh redistribution");
-    prm.declare_entry("lumped",
-                      "true",
-                      Patterns::Bool(),
-                      "Nodal (Gauss–Lobatto) quadrature for (Y·ñ, φ) and (κñ, η), as in the BGN scheme.");
-    prm.declare_entry("relaxation time",
-                      "0.05",
-                      Patterns::Double(0),
-                      "T_r of the tangential damping (T_r/τ)(P̃(Y − X^m), η)_h added to the BGN equation: "
-                      "the mesh relaxes towards the BGN distribution on the time scale T_r h² instead of "
-                      "jumping there within one step, so that steps τ → 0 change nothing. 0: plain BGN.");
-    prm.declare_entry("follow rigid motion",
-                      "true",
-                      Patterns::Bool(),
-                      "The tangential damping relaxes the nodes towards X^m + τR instead of X^m, R = U + Ω × (x − x_c) "
-                      "the rigid motion of the shape (its normal part R·ν fits u^m·ν in L²): a rotating or "
-                      "translating body carries its mesh along instead of moving through it, while a body spinning "
-                      "about its own axis of symmetry (R·ν ≡ 0) leaves its mesh in place. No effect when T_r = 0.");
-    prm.declare_entry("rigid motion cutoff",
-                      "0.01",
-                      Patterns::Double(0),
-                      "ε of the fit of R: min ∫(u·ν − R·ν)² + ε|S||c|², c the coefficients of R in the basis e_d, "
-                      "e_d × (x − x_c)/R_g (R_g the radius of gyration); rigid motions with ∫(R·ν)² ≪ ε|S||c|² are "
-                      "not followed.");
-    prm.declare_entry("mesh quality floor",
-                      "0.02",
-                      Patterns::Double(0, 1),
-                      "q_min: the run stops when min over cells of σ_min/σ_max of the Jacobian falls below.");
-    prm.leave_subsection();
-  }
-
-  void
-  MeshRedistribution::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("mesh redistribution");
-    lumped             = prm.get_bool("lumped");
-    relaxation_time    = prm.get_double("relaxation time");
-    follow_rigid_motion = prm.get_bool("follow rigid motion");
-    shape_motion_cutoff = prm.get_double("rigid motion cutoff");
-    mesh_quality_floor = prm.get_double("mesh quality floor");
-    prm.leave_subsection();
-  }
-
   FluidDeformableSurface::FluidDeformableSurface(SurfaceGeometry &geometry)
     : geometry(geometry)
-    , rotation_axis({0., 0., 1.})
     , dofs(geometry.triangulation())
     , linear_solver("Amesos_Mumps") // `direct solver = default` of this scene
   {}
@@ -129,6 +33,7 @@ namespace FluidSurface
   void
   FluidDeformableSurface::declare_parameters(ParameterHandler &prm)
   {
+    SurfaceFluid::declare_parameters(prm);
     BendingForce::declare_parameters(prm);
     VolumeConstraint::declare_parameters(prm);
     MeshRedistribution::declare_parameters(prm);
@@ -159,54 +64,30 @@ namespace FluidSurface
                       "Amplitude ε_X of a smooth seeded random radial displacement of the initial shape.");
     prm.declare_entry("random seed", "1", Patterns::Integer(0), "Seed of the perturbations (same on every rank).");
     prm.leave_subsection();
-    prm.enter_subsection("flow");
-    prm.declare_entry("conserve momenta",
-                      "false",
-                      Patterns::Bool(),
-                      "With inertia: keep the linear and angular momenta ∫u = P₀ and ∫x × u = L₀ (about the "
-                      "origin, P₀ and L₀ of the initial state) at every step by six global multipliers μ_k, "
-                      "force Σμ_k r_k for the rigid motions r = e_d, e_d × x (the same columns as the Stokes "
-                      "limit). The continuous model conserves both exactly; without the multipliers the "
-                      "discrete model loses angular momentum while the shape deforms fast (the prolate "
-                      "equilibrium perturbed by 2e-2, refinement 3: 11 % of L by the time F has fallen by 10 % "
-                      "with τ ≤ 0.05, still 8 % with τ ≤ 0.0125: mostly a space-discretization error). |μ| is the statistics column 'rigid multiplier'.");
-    prm.declare_entry("rigid motion regularization",
-                      "1e-6",
-                      Patterns::Double(0),
-                      "Scene full with inertia = false (Stokes limit): ε of the term ε(u, v) that makes the "
-                      "step matrix invertible on the rigid motions (translations and rotations dissipate "
-                      "nothing and, without the mass term, nothing else fixes them). Their amplitude is "
-                      "then set exactly by the multipliers of ∫u = 0 and ∫x × u = 0; ε only adds the "
-                      "dissipation ε‖u‖² to the other modes (relative size ε·Re/2).");
-    prm.leave_subsection();
   }
 
   void
   FluidDeformableSurface::parse_parameters(ParameterHandler &prm)
   {
-    bending.parse_parameters(prm);
-    volume_constraint.parse_parameters(prm);
-    redistribution.parse_parameters(prm);
-    linear_solver.parse_parameters(prm);
-    prm.enter_subsection("volume constraint");
-    drift_correction_time = prm.get_double("drift correction time");
-    prm.leave_subsection();
     prm.enter_subsection("time stepping");
-    drift_correction_time = std::max(drift_correction_time, prm.get_double("maximum time step"));
+    const double maximum_time_step = prm.get_double("maximum time step");
     prm.leave_subsection();
-    prm.enter_subsection("flow");
-    flow.reynolds_number = prm.get_double("Re");
-    flow.inertia         = prm.get_bool("inertia");
-    flow.convection      = prm.get_bool("convection") && flow.inertia;
-    flow.conserve_momenta = prm.get_bool("conserve momenta") && flow.inertia;
-    stokes_regularization                   = prm.get_double("rigid motion regularization");
-    if (!flow.inertia && !(stokes_regularization > 0))
-      throw_invalid_entry("flow/rigid motion regularization",
-                          prm.get("rigid motion regularization"),
-                          "ε > 0 when inertia = false (the step matrix is singular on rigid motions otherwise)");
-    prm.leave_subsection();
+    parse_parameters(prm, maximum_time_step);
+  }
+
+  void
+  FluidDeformableSurface::parse_parameters(ParameterHandler &prm, const double maximum_time_step)
+  {
+    reject_entries_unused_by_scene({"fixed surface/*", "fixed surface solver/*"}, "full");
+    flow.parse_parameters(prm);
+    bending.parse_parameters(prm);
+    volume_constraint.parse_parameters(prm, maximum_time_step);
+    redistribution.parse_parameters(prm);
+    momentum_constraints = MomentumConstraints(flow);
+    // The linear solver of the step (entries shared with scene fixed surface).
+    linear_solver.parse_parameters(prm);
     prm.enter_subsection("initial state");
-    initial_angular_velocity = prm.get_double("angular velocity");
+    angular_velocity     = prm.get_double("angular velocity");
     equilibrium_rotation = prm.get_bool("equilibrium rotation");
     if (equilibrium_rotation && geometry.equilibrium_shape() == nullptr)
       throw_invalid_entry("initial state/equilibrium rotation",
@@ -225,9 +106,9 @@ namespace FluidSurface
     const auto U = Utilities::split_string_list(prm.get("translation velocity"));
     for (unsigned int d = 0; d < 3; ++d)
       translation_velocity[d] = Utilities::string_to_double(U[d]);
-    velocity_noise = prm.get_double("velocity perturbation");
-    shape_noise    = prm.get_double("shape perturbation");
-    random_seed    = prm.get_integer("random seed");
+    velocity_perturbation = prm.get_double("velocity perturbation");
+    shape_perturbation    = prm.get_double("shape perturbation");
+    random_seed           = prm.get_integer("random seed");
     prm.leave_subsection();
   }
 
@@ -308,17 +189,17 @@ namespace FluidSurface
   void
   FluidDeformableSurface::setup()
   {
-    if (shape_noise > 0)
+    if (shape_perturbation > 0)
       {
         const SmoothRandomField field(random_seed, 0);
         const Point<3>          centre(geometry.measure().centre_of_mass);
         geometry.transform_nodes([&](const Point<3> &x) {
           const Tensor<1, 3> radial = x - centre;
-          return Point<3>(x + shape_noise * field(x) * radial / radial.norm());
+          return Point<3>(x + shape_perturbation * field(x) * radial / radial.norm());
         });
       }
     if (equilibrium_rotation)
-      initial_angular_velocity = geometry.equilibrium_shape()->angular_velocity();
+      angular_velocity = geometry.equilibrium_shape()->angular_velocity();
     setup_dofs();
     set_initial_velocity();
     if (flow.conserve_momenta)
@@ -338,6 +219,7 @@ namespace FluidSurface
     const unsigned int k = geometry.degree();
     fe = std::make_unique<FESystem<2, 3>>(FE_Q<2, 3>(2), 3, FE_Q<2, 3>(1), 1, FE_Q<2, 3>(k), 1, FE_Q<2, 3>(k), 1,
                                           FE_Q<2, 3>(k), 3);
+    layout = std::make_unique<const DofLayout>(*fe);
     dofs.distribute_dofs(*fe);
     owned = dofs.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dofs, relevant);
@@ -422,10 +304,10 @@ namespace FluidSurface
                              dofs,
                              InitialVelocity(fe->n_components(),
                                              translation_velocity,
-                                             initial_angular_velocity,
+                                             angular_velocity,
                                              rotation_axis,
                                              rotation_centre,
-                                             velocity_noise,
+                                             velocity_perturbation,
                                              random_seed),
                              initial);
     // Y starts at X so that the state is complete; κ, y, p are outputs of a step.
@@ -441,47 +323,6 @@ namespace FluidSurface
 
   namespace
   {
-    /// Per-thread FEValues: flow and geometry elements, Gauss and nodal (Gauss–Lobatto) rules.
-    struct ScratchData
-    {
-      ScratchData(const Mapping<2, 3>       &mapping,
-                  const FiniteElement<2, 3> &flow_fe,
-                  const FiniteElement<2, 3> &geometry_fe,
-                  const Quadrature<2>       &gauss,
-                  const Quadrature<2>       &nodal)
-        : flow(mapping, flow_fe, gauss, update_values | update_gradients | update_normal_vectors |
-                                          update_quadrature_points | update_JxW_values)
-        , flow_nodal(mapping, flow_fe, nodal, update_values | update_gradients | update_quadrature_points |
-                                                update_JxW_values)
-        , geometry(mapping, geometry_fe, gauss, update_values | update_gradients)
-        , geometry_nodal(mapping, geometry_fe, nodal, update_values)
-      {}
-      ScratchData(const ScratchData &other)
-        : flow(other.flow.get_mapping(), other.flow.get_fe(), other.flow.get_quadrature(), other.flow.get_update_flags())
-        , flow_nodal(other.flow_nodal.get_mapping(),
-                     other.flow_nodal.get_fe(),
-                     other.flow_nodal.get_quadrature(),
-                     other.flow_nodal.get_update_flags())
-        , geometry(other.geometry.get_mapping(),
-                   other.geometry.get_fe(),
-                   other.geometry.get_quadrature(),
-                   other.geometry.get_update_flags())
-        , geometry_nodal(other.geometry_nodal.get_mapping(),
-                         other.geometry_nodal.get_fe(),
-                         other.geometry_nodal.get_quadrature(),
-                         other.geometry_nodal.get_update_flags())
-      {}
-      FEValues<2, 3> flow, flow_nodal, geometry, geometry_nodal;
-    };
-
-    struct CopyData
-    {
-      FullMatrix<double>                   matrix;
-      Vector<double>                       rhs, volume_column;
-      std::array<Vector<double>, 6>        rigid, rigid_rows;
-      std::vector<types::global_dof_index> indices;
-    };
-
     /// A TimerOutput section for the lifetime of the object (nothing without a timer).
     class TimerSection
     {
@@ -509,6 +350,46 @@ namespace FluidSurface
 
   } // namespace
 
+  /// Per-thread FEValues (flow and geometry elements, Gauss and nodal rules) and point values of a cell.
+  struct FluidDeformableSurface::AssemblyScratch
+  {
+    AssemblyScratch(const Mapping<2, 3>       &mapping,
+                    const FiniteElement<2, 3> &flow_fe,
+                    const FiniteElement<2, 3> &geometry_fe,
+                    const Quadrature<2>       &gauss,
+                    const Quadrature<2>       &nodal)
+      : flow(mapping, flow_fe, gauss, update_values | update_gradients | update_normal_vectors |
+                                        update_quadrature_points | update_JxW_values)
+      , flow_nodal(mapping, flow_fe, nodal, update_values | update_gradients | update_quadrature_points |
+                                              update_JxW_values)
+      , geometry(mapping, geometry_fe, gauss, update_values | update_gradients)
+      , geometry_nodal(mapping, geometry_fe, nodal, update_values)
+      , point(flow_fe.n_dofs_per_cell())
+      , nodal_point(flow_fe.n_dofs_per_cell())
+      , smooth_normal(gauss.size())
+      , smooth_normal_gradient(gauss.size())
+      , old_velocity(gauss.size())
+      , old_velocity_gradient(gauss.size())
+      , nodal_smooth_normal(nodal.size())
+    {}
+    AssemblyScratch(const AssemblyScratch &other)
+      : AssemblyScratch(other.flow.get_mapping(),
+                        other.flow.get_fe(),
+                        other.geometry.get_fe(),
+                        other.flow.get_quadrature(),
+                        other.flow_nodal.get_quadrature())
+    {}
+
+    FEValues<2, 3>            flow, flow_nodal, geometry, geometry_nodal;
+    SurfacePointValues        point;
+    NodalPointValues          nodal_point;
+    std::vector<Tensor<1, 3>> smooth_normal;          ///< ñ^m at the Gauss points
+    std::vector<Tensor<2, 3>> smooth_normal_gradient; ///< ∇ñ^m
+    std::vector<Tensor<1, 3>> old_velocity;           ///< u^m
+    std::vector<Tensor<2, 3>> old_velocity_gradient;  ///< G^m
+    std::vector<Tensor<1, 3>> nodal_smooth_normal;    ///< ñ^m at the nodal points
+  };
+
   void
   FluidDeformableSurface::assemble(const double tau, const RigidMotion &motion)
   {
@@ -519,238 +400,32 @@ namespace FluidSurface
       column = 0;
     for (auto &row : rigid_rows)
       row = 0;
-    const bool   stokes         = !flow.inertia;
-    const bool   rigid          = rigid_constraints();
-    const double regularization = stokes ? stokes_regularization : 0.0;
+    const bool rigid = rigid_constraints();
 
     const SurfaceGeometry::Measures m = geometry.measure();
     // div_P u = s with s = −(A^m − A₀)/(τ_c A^m) returns any area drift (∫div_P u = dA/dt);
     // τ_c = max(τ, τ_drift) keeps the correction bounded when a rejected step shrinks τ.
-    const double area_rate = area_correction ? -(m.area - target_area) / (drift_time(tau) * m.area) : 0.0;
-    const double inv_tau   = 1.0 / tau;
-    const double viscosity = 2.0 / flow.reynolds_number;
-    const double inv_be    = bending.enabled ? 1.0 / bending.bending_number : 0.0;
-    const double damping   = redistribution.relaxation_time / tau;
-    // With inertia the momenta are held on the new surface S^{m+1} (linearized), so that no lag of one
-    // step's mesh motion has to be made up in the next step whatever its τ.
-    const bool momenta_on_new_surface = rigid && flow.inertia;
+    const double area_rate = -(m.area - target_area) / (drift_time(tau) * m.area);
     // The damping target X^m + τR: the mesh moves along with the rigid motion R of the shape (fit of u^m·ν).
-    const RigidMotion carried = redistribution.follow_rigid_motion && damping > 0 ? motion : RigidMotion();
+    const RigidMotion carried =
+      redistribution.follow_rigid_motion && redistribution.damping(tau) > 0 ? motion : RigidMotion();
 
-    const FEValuesExtractors::Vector velocity(velocity_component), position(position_component), vec(0);
-    const FEValuesExtractors::Scalar pressure(pressure_component), curvature(curvature_component),
-      bending_scalar(bending_component);
-    const QGauss<2>         gauss(fe->degree + 1);
-    const QGaussLobatto<2>  lobatto(geometry.degree() + 1);
-    const Quadrature<2>    &nodal = redistribution.lumped ? static_cast<const Quadrature<2> &>(lobatto) : gauss;
-    const unsigned int      n     = fe->n_dofs_per_cell();
+    const QGauss<2>     gauss(fe->degree + 1);
+    const Quadrature<2> nodal = redistribution.nodal_quadrature(gauss, geometry.degree());
 
     auto worker = [&](const typename DoFHandler<2, 3>::active_cell_iterator &cell,
-                      ScratchData                                         &scratch,
-                      CopyData                                            &copy) {
-      copy.matrix.reinit(n, n);
-      copy.rhs.reinit(n);
-      copy.volume_column.reinit(n);
-      if (rigid)
-        for (unsigned int k = 0; k < 6; ++k)
-          {
-            copy.rigid[k].reinit(n);
-            copy.rigid_rows[k].reinit(n);
-          }
-      copy.indices.resize(n);
-      cell->get_dof_indices(copy.indices);
-      typename DoFHandler<2, 3>::active_cell_iterator geo_cell(&geometry.triangulation(),
-                                                               cell->level(),
-                                                               cell->index(),
-                                                               &geometry.dof_handler());
-      scratch.flow.reinit(cell);
-      scratch.geometry.reinit(geo_cell);
-      const unsigned int        nq = scratch.flow.n_quadrature_points;
-      std::vector<Tensor<1, 3>> normal(nq), u_old(nq);
-      std::vector<Tensor<2, 3>> grad_u_old(nq);
-      std::vector<Tensor<2, 3>> normal_gradient(nq);
-      scratch.geometry[vec].get_function_values(geometry.normal_field(), normal);
-      scratch.geometry[vec].get_function_gradients(geometry.normal_field(), normal_gradient);
-      scratch.flow[velocity].get_function_values(current, u_old);
-      scratch.flow[velocity].get_function_gradients(current, grad_u_old);
-
-      std::vector<Tensor<1, 3>> phi_u(n), phi_Y(n);
-      std::vector<Tensor<2, 3>> grad_u(n), grad_Y(n), sigma_u(n);
-      std::vector<double>       div_u(n), phi_p(n), phi_k(n), phi_y(n);
-      std::vector<Tensor<1, 3>> grad_k(n), grad_y(n);
-      for (unsigned int q = 0; q < nq; ++q)
-        {
-          const double        dA = scratch.flow.JxW(q);
-          const Tensor<1, 3> &nu = scratch.flow.normal_vector(q);
-          const Tensor<2, 3>  P  = SurfaceOperators::projection(nu);
-          // Lagged shape operator B = −P∇ñ and c = |B|² − ½H² (vanishes on spheres).
-          const Tensor<2, 3> B = -P * normal_gradient[q];
-          const double       H = trace(B);
-          const double       c = scalar_product(B, B) - 0.5 * H * H;
-          // ∇_w u with w = u − (Y − X^m)/τ, linearized as ∇u^{m+1} u^m − ∇u^m (Y − X^m)/τ: the
-          // mesh velocity of this very step, so that a tangential jump of the nodes (BGN) carries
-          // the nodal velocities along consistently.
-          const Tensor<1, 3> &w        = u_old[q];
-          const Tensor<1, 3>  x_m      = scratch.flow.quadrature_point(q);
-          const Tensor<1, 3>  grad_u_x = grad_u_old[q] * x_m;
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              phi_u[i]   = scratch.flow[velocity].value(i, q);
-              grad_u[i]  = scratch.flow[velocity].gradient(i, q);
-              div_u[i]   = SurfaceOperators::surface_divergence(grad_u[i]);
-              sigma_u[i] = SurfaceOperators::strain_rate(grad_u[i], nu);
-              phi_p[i]   = scratch.flow[pressure].value(i, q);
-              phi_k[i]   = scratch.flow[curvature].value(i, q);
-              grad_k[i]  = scratch.flow[curvature].gradient(i, q);
-              phi_y[i]   = scratch.flow[bending_scalar].value(i, q);
-              grad_y[i]  = scratch.flow[bending_scalar].gradient(i, q);
-              phi_Y[i]   = scratch.flow[position].value(i, q);
-              grad_Y[i]  = scratch.flow[position].gradient(i, q);
-            }
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const unsigned int ci = fe->system_to_component_index(i).first;
-              if (ci < pressure_component)
-                {
-                  if (flow.inertia)
-                    copy.rhs(i) += inv_tau * (u_old[q] * phi_u[i]) * dA;
-                  if (flow.convection)
-                    copy.rhs(i) -= inv_tau * (grad_u_x * phi_u[i]) * dA;
-                  copy.volume_column(i) += (phi_u[i] * normal[q]) * dA;
-                  if (rigid)
-                    for (unsigned int d = 0; d < 3; ++d)
-                      {
-                        // (r, v) for r = e_d and r = e_d × x: ∫u and ∫x × u against the multipliers.
-                        copy.rigid[d](i) += phi_u[i][d] * dA;
-                        copy.rigid[3 + d](i) +=
-                          (cross_product_3d(Tensor<1, 3>(Point<3>::unit_vector(d)), x_m) * phi_u[i]) * dA;
-                        copy.rigid_rows[d](i) = copy.rigid[d](i);
-                        copy.rigid_rows[3 + d](i) = copy.rigid[3 + d](i);
-                      }
-                  for (unsigned int j = 0; j < n; ++j)
-                    {
-                      const unsigned int cj = fe->system_to_component_index(j).first;
-                      double             a  = 0;
-                      if (cj < pressure_component)
-                        {
-                          a += viscosity * scalar_product(sigma_u[i], sigma_u[j]);
-                          if (flow.inertia)
-                            a += inv_tau * (phi_u[i] * phi_u[j]);
-                          else
-                            a += regularization * (phi_u[i] * phi_u[j]);
-                          // (∇_w u, v). Its skew-symmetric form ½[(∇u w, v) − (∇v w, u)] is
-                          // inconsistent on a deforming surface (it drops ½(div_S(Pw) u, v), and
-                          // div_S(Pw) = H u·ν ≠ 0), and costs angular momentum.
-                          if (flow.convection)
-                            a += (grad_u[j] * w) * phi_u[i];
-                        }
-                      else if (cj == pressure_component)
-                        a -= phi_p[j] * div_u[i];
-                      else if (cj >= position_component && flow.convection)
-                        a -= inv_tau * ((grad_u_old[q] * phi_Y[j]) * phi_u[i]);
-                      else if (cj == bending_component)
-                        a -= inv_be * phi_y[j] * (normal[q] * phi_u[i]);
-                      copy.matrix(i, j) += a * dA;
-                    }
-                }
-              else if (ci == pressure_component)
-                {
-                  copy.rhs(i) -= area_rate * phi_p[i] * dA;
-                  for (unsigned int j = 0; j < n; ++j)
-                    if (fe->system_to_component_index(j).first < pressure_component)
-                      copy.matrix(i, j) -= phi_p[i] * div_u[j] * dA;
-                }
-              else if (ci == bending_component)
-                {
-                  // (y, φ) − (∇κ, ∇φ) + (cκ, φ) = 0.
-                  for (unsigned int j = 0; j < n; ++j)
-                    {
-                      const unsigned int cj = fe->system_to_component_index(j).first;
-                      if (cj == bending_component)
-                        copy.matrix(i, j) += phi_y[i] * phi_y[j] * dA;
-                      else if (cj == curvature_component)
-                        copy.matrix(i, j) += (-grad_k[j] * grad_y[i] + c * phi_k[j] * phi_y[i]) * dA;
-                    }
-                }
-              else if (ci >= position_component)
-                {
-                  if (momenta_on_new_surface)
-                    {
-                      // The momenta on S^{m+1} to first order in δ = Y − X^m (u ≈ u^m in the correction):
-                      // ∫_{S^{m+1}} u ≈ ∫u + ∫u^m div_S δ, ∫_{S^{m+1}} x × u ≈ ∫x × u + ∫δ × u^m + (x × u^m) div_S δ.
-                      // The Y-dependent parts are the Y entries of the constraint rows.
-                      const double       div_Y = trace(grad_Y[i]);
-                      const Tensor<1, 3> L_old = cross_product_3d(x_m, u_old[q]);
-                      const Tensor<1, 3> Y_u   = cross_product_3d(phi_Y[i], u_old[q]);
-                      for (unsigned int d = 0; d < 3; ++d)
-                        {
-                          copy.rigid_rows[d](i) += u_old[q][d] * div_Y * dA;
-                          copy.rigid_rows[3 + d](i) += (Y_u[d] + L_old[d] * div_Y) * dA;
-                        }
-                    }
-                  // (∇_S Y, ∇_S η) of κñ = Δ_S Y.
-                  for (unsigned int j = 0; j < n; ++j)
-                    if (fe->system_to_component_index(j).first >= position_component)
-                      copy.matrix(i, j) += scalar_product(grad_Y[i], grad_Y[j]) * dA;
-                }
-            }
-        }
-
-      // Nodal terms: (1/τ)(Y·ñ − τu·ñ, φ)_h = (1/τ)(X^m·ñ, φ)_h in the κ rows; (κñ, η)_h in the Y rows.
-      scratch.flow_nodal.reinit(cell);
-      typename DoFHandler<2, 3>::active_cell_iterator geo_cell_nodal = geo_cell;
-      scratch.geometry_nodal.reinit(geo_cell_nodal);
-      const unsigned int        nl = scratch.flow_nodal.n_quadrature_points;
-      std::vector<Tensor<1, 3>> nodal_normal(nl);
-      scratch.geometry_nodal[vec].get_function_values(geometry.normal_field(), nodal_normal);
-      for (unsigned int q = 0; q < nl; ++q)
-        {
-          const double        dA = scratch.flow_nodal.JxW(q);
-          const Tensor<1, 3> &nt = nodal_normal[q];
-          const Point<3>     &x  = scratch.flow_nodal.quadrature_point(q);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const unsigned int ci = fe->system_to_component_index(i).first;
-              if (ci == curvature_component)
-                {
-                  const double phi = scratch.flow_nodal[curvature].value(i, q);
-                  copy.rhs(i) += inv_tau * (x * nt) * phi * dA;
-                  for (unsigned int j = 0; j < n; ++j)
-                    {
-                      const unsigned int cj = fe->system_to_component_index(j).first;
-                      if (cj >= position_component)
-                        copy.matrix(i, j) += inv_tau * (scratch.flow_nodal[position].value(j, q) * nt) * phi * dA;
-                      else if (cj < pressure_component)
-                        copy.matrix(i, j) -= (scratch.flow_nodal[velocity].value(j, q) * nt) * phi * dA;
-                    }
-                }
-              else if (ci >= position_component)
-                {
-                  // (κñ, η)_h, and the tangential damping (T_r/τ)(P̃(Y − X^m − τR), η)_h, P̃ = I − ññ.
-                  const Tensor<1, 3> eta         = scratch.flow_nodal[position].value(i, q);
-                  const Tensor<1, 3> eta_tangent = eta - (eta * nt) * nt;
-                  copy.rhs(i) += damping * ((x + tau * carried.value(x)) * eta_tangent) * dA;
-                  for (unsigned int j = 0; j < n; ++j)
-                    {
-                      const unsigned int cj = fe->system_to_component_index(j).first;
-                      if (cj == curvature_component)
-                        copy.matrix(i, j) += scratch.flow_nodal[curvature].value(j, q) * (nt * eta) * dA;
-                      else if (cj >= position_component && damping > 0)
-                        copy.matrix(i, j) += damping * (scratch.flow_nodal[position].value(j, q) * eta_tangent) * dA;
-                    }
-                }
-            }
-        }
+                      AssemblyScratch                                      &scratch,
+                      LocalSystem                                          &local) {
+      assemble_cell(cell, tau, area_rate, carried, scratch, local);
     };
-
-    auto copier = [&](const CopyData &copy) {
-      constraints.distribute_local_to_global(copy.matrix, copy.rhs, copy.indices, system_matrix, system_rhs);
-      constraints.distribute_local_to_global(copy.volume_column, copy.indices, volume_column);
+    auto copier = [&](const LocalSystem &local) {
+      constraints.distribute_local_to_global(local.matrix, local.rhs, local.indices, system_matrix, system_rhs);
+      constraints.distribute_local_to_global(local.volume_column, local.indices, volume_column);
       if (rigid)
         for (unsigned int k = 0; k < 6; ++k)
           {
-            constraints.distribute_local_to_global(copy.rigid[k], copy.indices, rigid_columns[k]);
-            constraints.distribute_local_to_global(copy.rigid_rows[k], copy.indices, rigid_rows[k]);
+            constraints.distribute_local_to_global(local.rigid_columns[k], local.indices, rigid_columns[k]);
+            constraints.distribute_local_to_global(local.rigid_rows[k], local.indices, rigid_rows[k]);
           }
     };
 
@@ -759,8 +434,8 @@ namespace FluidSurface
                     FilteredIterator<Iterator>(IteratorFilters::LocallyOwnedCell(), dofs.end()),
                     worker,
                     copier,
-                    ScratchData(geometry.mapping(), *fe, geometry.fe(), gauss, nodal),
-                    CopyData());
+                    AssemblyScratch(geometry.mapping(), *fe, geometry.fe(), gauss, nodal),
+                    LocalSystem());
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
     volume_column.compress(VectorOperation::add);
@@ -770,6 +445,109 @@ namespace FluidSurface
           rigid_columns[k].compress(VectorOperation::add);
           rigid_rows[k].compress(VectorOperation::add);
         }
+  }
+
+  void
+  FluidDeformableSurface::assemble_cell(const typename DoFHandler<2, 3>::active_cell_iterator &cell,
+                                        const double                                         tau,
+                                        const double                                         area_rate,
+                                        const RigidMotion                                   &carried,
+                                        AssemblyScratch                                     &scratch,
+                                        LocalSystem                                         &local) const
+  {
+    const bool rigid = momentum_constraints.active();
+    local.reinit(fe->n_dofs_per_cell(), rigid);
+    cell->get_dof_indices(local.indices);
+    const typename DoFHandler<2, 3>::active_cell_iterator geometry_cell(&geometry.triangulation(),
+                                                                        cell->level(),
+                                                                        cell->index(),
+                                                                        &geometry.dof_handler());
+    const FEValuesExtractors::Vector vector(0);
+
+    // Gauss points: the flow terms, the bending force and scalar, (∇_S Y, ∇_S η), the global columns.
+    scratch.flow.reinit(cell);
+    scratch.geometry.reinit(geometry_cell);
+    scratch.geometry[vector].get_function_values(geometry.normal_field(), scratch.smooth_normal);
+    scratch.geometry[vector].get_function_gradients(geometry.normal_field(), scratch.smooth_normal_gradient);
+    scratch.flow[vector].get_function_values(current, scratch.old_velocity);
+    scratch.flow[vector].get_function_gradients(current, scratch.old_velocity_gradient);
+    SurfacePointValues &point = scratch.point;
+    for (unsigned int q = 0; q < scratch.flow.n_quadrature_points; ++q)
+      {
+        point.reinit(scratch.flow,
+                     q,
+                     scratch.smooth_normal[q],
+                     scratch.smooth_normal_gradient[q],
+                     scratch.old_velocity[q],
+                     scratch.old_velocity_gradient[q]);
+        assemble_flow_terms(point, tau, area_rate, local);
+        bending.assemble_force(point, *layout, local.matrix);
+        bending.assemble_bending_scalar(point, *layout, local.matrix);
+        redistribution.assemble_surface_laplacian(point, *layout, local.matrix);
+        volume_constraint.assemble_column(point, *layout, local.volume_column);
+        if (rigid)
+          momentum_constraints.assemble_columns(point, *layout, local.rigid_columns);
+        if (momentum_constraints.on_new_surface())
+          momentum_constraints.assemble_new_surface_rows(point, *layout, local.rigid_rows);
+      }
+    // The constraint rows equal the columns in the velocity DoFs.
+    if (rigid)
+      for (unsigned int k = 0; k < 6; ++k)
+        for (const unsigned int i : layout->velocity)
+          local.rigid_rows[k](i) = local.rigid_columns[k](i);
+
+    // Nodal points: the kinematics (κ rows) and the nodal terms of the redistribution (Y rows).
+    scratch.flow_nodal.reinit(cell);
+    scratch.geometry_nodal.reinit(geometry_cell);
+    scratch.geometry_nodal[vector].get_function_values(geometry.normal_field(), scratch.nodal_smooth_normal);
+    NodalPointValues &nodal = scratch.nodal_point;
+    for (unsigned int q = 0; q < scratch.flow_nodal.n_quadrature_points; ++q)
+      {
+        nodal.reinit(scratch.flow_nodal, q, scratch.nodal_smooth_normal[q]);
+        redistribution.assemble_kinematics(nodal, *layout, tau, local.matrix, local.rhs);
+        redistribution.assemble_nodal_terms(
+          nodal, *layout, tau, carried.value(nodal.position), local.matrix, local.rhs);
+      }
+  }
+
+  void
+  FluidDeformableSurface::assemble_flow_terms(const SurfacePointValues &point,
+                                              const double              tau,
+                                              const double              area_rate,
+                                              LocalSystem              &local) const
+  {
+    const FlowPointValues &p       = point.flow;
+    const double           dA      = p.JxW;
+    const double           inv_tau = 1.0 / tau;
+    // The mass term: the inertia (1/τ)(u, v), or the Stokes limit's regularization ε(u, v).
+    const double mass = flow.inertia ? inv_tau : momentum_constraints.regularization();
+    for (const unsigned int i : layout->velocity)
+      {
+        if (flow.inertia)
+          local.rhs(i) += SurfaceFluid::mass_term_rhs(p, i, inv_tau) * dA;
+        if (flow.convection)
+          local.rhs(i) += SurfaceFluid::mesh_motion_term_rhs(p, i, inv_tau) * dA;
+        for (const unsigned int j : layout->velocity)
+          {
+            double a = flow.viscous_term(p, i, j);
+            a += SurfaceFluid::mass_term(p, i, j, mass);
+            // (∇_w u, v) with w = u^m, consistent (not skew-symmetrized; doc/scheme.md).
+            if (flow.convection)
+              a += SurfaceFluid::convection_term(p, i, j);
+            local.matrix(i, j) += a * dA;
+          }
+        for (const unsigned int j : layout->pressure)
+          local.matrix(i, j) += SurfaceFluid::pressure_term(p, i, j) * dA;
+        if (flow.convection)
+          for (const unsigned int j : layout->new_position)
+            local.matrix(i, j) += SurfaceFluid::mesh_motion_term(p, i, point.new_position[j], inv_tau) * dA;
+      }
+    for (const unsigned int i : layout->pressure)
+      {
+        local.rhs(i) += SurfaceFluid::continuity_term_rhs(p, i, area_rate) * dA;
+        for (const unsigned int j : layout->velocity)
+          local.matrix(i, j) += SurfaceFluid::continuity_term(p, i, j) * dA;
+      }
   }
 
   ReusedFactorizationSolver::Result
@@ -858,7 +636,7 @@ namespace FluidSurface
       {
         rhs(j) = sums[6 + j];
         for (unsigned int l = 0; l < 6; ++l)
-          normal_matrix(j, l) = sums[12 + 6 * j + l] + (j == l ? redistribution.shape_motion_cutoff * m.area : 0.0);
+          normal_matrix(j, l) = sums[12 + 6 * j + l] + (j == l ? redistribution.rigid_motion_cutoff * m.area : 0.0);
       }
     inverse.invert(normal_matrix);
     inverse.vmult(coefficients, rhs);
@@ -982,45 +760,16 @@ namespace FluidSurface
   double
   FluidDeformableSurface::kinetic_energy(const VectorType &state) const
   {
-    const QGauss<2>                  q = geometry.quadrature();
-    FEValues<2, 3>                   fe_values(geometry.mapping(), *fe, q, update_values | update_JxW_values);
-    const FEValuesExtractors::Vector velocity(velocity_component);
-    std::vector<Tensor<1, 3>>        u(q.size());
-    double                           energy = 0;
-    for (const auto &cell : dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          fe_values[velocity].get_function_values(state, u);
-          for (unsigned int k = 0; k < q.size(); ++k)
-            energy += 0.5 * u[k].norm_square() * fe_values.JxW(k);
-        }
-    return Utilities::MPI::sum(energy, geometry.get_communicator());
+    return EnergyFunctionals::kinetic_energy(
+      geometry.mapping(), dofs, state, geometry.quadrature(), geometry.get_communicator());
   }
 
   double
   FluidDeformableSurface::dissipation_rate(const VectorType &state) const
   {
-    const QGauss<2>                  q = geometry.quadrature();
-    FEValues<2, 3>                   fe_values(geometry.mapping(), *fe, q, update_gradients | update_normal_vectors |
-                                                                   update_JxW_values);
-    const FEValuesExtractors::Vector velocity(velocity_component);
-    std::vector<Tensor<2, 3>>        grad(q.size());
-    double                           rate = 0;
-    for (const auto &cell : dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          fe_values[velocity].get_function_gradients(state, grad);
-          for (unsigned int k = 0; k < q.size(); ++k)
-            {
-              const Tensor<2, 3> sigma = SurfaceOperators::strain_rate(grad[k], fe_values.normal_vector(k));
-              rate += scalar_product(sigma, sigma) * fe_values.JxW(k);
-            }
-        }
-    return 2.0 / flow.reynolds_number * Utilities::MPI::sum(rate, geometry.get_communicator());
+    return EnergyFunctionals::dissipation_rate(
+      geometry.mapping(), dofs, state, geometry.quadrature(), flow.Re, geometry.get_communicator());
   }
-
 
   void
   FluidDeformableSurface::add_output_fields(DataOut<2, 3> &data_out) const

@@ -2,6 +2,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <fluid_surface/flow/energy_functionals.h>
 #include <fluid_surface/io/checkpoint.h>
 #include <fluid_surface/postprocess/diagnostics.h>
 #include <fluid_surface/io/parameter_file.h>
@@ -378,7 +379,7 @@ namespace FluidSurface
               const Tensor<1, 3> x  = fe_values.quadrature_point(k) - c;
               const Tensor<1, 3> radial = x - (x * axis) * axis;
               const double       r      = radial.norm();
-              local[0] += 0.5 * u[k].norm_square() * dA;
+              local[0] += EnergyFunctionals::kinetic_energy_density(u[k]) * dA;
               if (r > 1e-12)
                 local[1] += (u[k] * cross_product_3d(axis, radial)) / (r * r) * dA;
               const Tensor<1, 3> L = cross_product_3d(x, u[k]);

@@ -256,13 +256,30 @@ namespace FluidSurface
                       Patterns::Double(),
                       "ω of the Killing field u = ω e_z × x.");
     prm.leave_subsection();
-    // `time stepping` (end time, time step) is TimeStepper's and `flow` is SurfaceFlow's; the
-    // Simulation declares both once.
+    // `time stepping` (end time, time step) is TimeStepper's, `flow` SurfaceFluid's and `fixed surface
+    // solver` SurfaceFlow's; the Simulation declares each once.
   }
 
   void
   FixedSurfaceScene::parse_parameters(ParameterHandler &prm)
   {
+    reject_entries_unused_by_scene({"flow/conserve momenta",
+                                    "flow/rigid motion regularization",
+                                    "bending/*",
+                                    "volume constraint/*",
+                                    "mesh redistribution/*",
+                                    "initial state/*",
+                                    "equilibrium/*",
+                                    "diagnostics/*",
+                                    "checkpoint/*",
+                                    "time stepping/adaptive",
+                                    "time stepping/minimum time step",
+                                    "time stepping/maximum time step",
+                                    "time stepping/growth factor",
+                                    "time stepping/shrink factor",
+                                    "time stepping/easy steps before growth",
+                                    "time stepping/energy tolerance"},
+                                   "fixed surface");
     prm.enter_subsection("fixed surface");
     const std::string name = prm.get("problem");
     problem     = name == "manufactured sphere"    ? Problem::manufactured_sphere :
@@ -278,7 +295,9 @@ namespace FluidSurface
     if (!(time_step > 0))
       throw_invalid_entry("time stepping/time step", prm.get("time step"), "a positive time step τ");
     prm.leave_subsection();
-    flow_parameters.parse(prm);
+    SurfaceFluid fluid;
+    fluid.parse_parameters(prm);
+    flow_parameters.parse(prm, fluid);
 
     prm.enter_subsection("geometry");
     const std::string shape = prm.get("shape");

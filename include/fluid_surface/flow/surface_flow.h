@@ -16,11 +16,13 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fluid_surface/flow/flow_point_values.h>
+#include <fluid_surface/flow/surface_fluid.h>
+#include <fluid_surface/geometry/surface_geometry.h>
 #include <fluid_surface/io/output_writer.h>
 #include <fluid_surface/linear_algebra/block_stokes_preconditioner.h>
 #include <fluid_surface/linear_algebra/reused_factorization_solver.h>
 #include <fluid_surface/io/statistics_file.h>
-#include <fluid_surface/geometry/surface_geometry.h>
 
 #include <array>
 #include <functional>
@@ -47,18 +49,19 @@ namespace FluidSurface
 
   /**
    * Surface Navier–Stokes on a frozen surface S_h with Günther derivatives,
-   * Taylor–Hood u ∈ [Q2]³ (full 3D vector), p ∈ Q1:
+   * Taylor–Hood u ∈ [Q2]³ (full 3D vector), p ∈ Q1: the solver of scene fixed surface.
    *
    *   (α₀/τ)(u, v) + c(w; u, v) + (2/Re)(σ(u), σ(v)) − (p, div_P v) − (div_P u, q)
    *     + η (u·n, v·n) = (f, v) + (1/τ)(Σ_k β_k u^{m−k}, v),
    *
-   * σ(u) = ½(∇_P u + ∇_P uᵀ), ∇_P u = P ∇_C u, div_P u = tr ∇_C u. Tangentiality
+   * σ(u) = ½(∇_P u + ∇_P uᵀ), ∇_P u = P ∇_C u, div_P u = tr ∇_C u. The mass, viscous, pressure,
+   * continuity and convection integrands are those of scene full (SurfaceFluid). Tangentiality
    * u·ν = 0 is imposed by the penalty η = β h_K^{−q} with a normal n that can be
    * the exact normal of the analytic surface, the continuous normal ñ of the
    * geometry, or the cell normal ν_h; or by a Lagrange multiplier λ ∈ Q_d,
    * (λ, v·n) + (u·n, μ) (direct solver only). Convection is the skew-symmetric form
-   * c(w; u, v) = ½[(∇_w u, v) − (∇_w v, u)] with w extrapolated from the old
-   * steps (energy neutral: c(w; u, u) = 0). Time derivative: BDF1 or BDF2.
+   * c(w; u, v) = ½[(∇_w u, v) − (∇_w v, u)] of SurfaceFluid::convection_term with w extrapolated
+   * from the old steps (energy neutral on the fixed surface: c(w; u, u) = 0). Time derivative: BDF1 or BDF2.
    * The mass and convection terms are assembled only when switched on.
    */
   class SurfaceFlow
@@ -115,18 +118,24 @@ namespace FluidSurface
       double normal_velocity   = 0; ///< ‖u_h·n‖_L2
     };
 
-    /// The entries of `subsection flow`.
+    /**
+     * The discretization and solver of scene fixed surface (`subsection fixed surface solver`), and what it
+     * takes from the fluid (`subsection flow`, SurfaceFluid).
+     */
     struct Parameters
     {
-      double        Re                   = 1.0;  ///< Reynolds number Re
-      bool          inertia              = true; ///< time derivative ∂_t u on/off
-      bool          convection           = true; ///< convection ∇_w u on/off
-      TimeScheme    scheme               = TimeScheme::bdf2;
-      Tangentiality tangentiality        = Tangentiality::penalty;
-      unsigned int  multiplier_degree    = 1; ///< polynomial degree of the multiplier λ ∈ Q_d
-      PenaltyNormal penalty_normal       = PenaltyNormal::exact;
-      double        penalty_factor       = 10.0; ///< β of η = β h^{−q}
-      double        penalty_exponent     = 3.0;  ///< q of η = β h^{−q}
+      // From the SurfaceFluid given to parse().
+      double Re{};         ///< Reynolds number Re
+      bool   inertia{};    ///< time derivative ∂_t u on/off
+      bool   convection{}; ///< convection ∇_w u on/off (with inertia only)
+
+      // `subsection fixed surface solver`, set by parse().
+      TimeScheme    scheme{};            ///< `time scheme`
+      Tangentiality tangentiality{};     ///< how u·n = 0 is imposed
+      unsigned int  multiplier_degree{}; ///< polynomial degree of the multiplier λ ∈ Q_d
+      PenaltyNormal penalty_normal{};    ///< n of the penalty η(u·n, v·n)
+      double        penalty_factor{};    ///< β of η = β h^{−q}
+      double        penalty_exponent{};  ///< q of η = β h^{−q}
       LinearSolver  solver               = LinearSolver::direct;
       std::string   amg_smoother         = "symmetric block Gauss-Seidel"; ///< ML smoother of the velocity AMG
       double        amg_aggregation_threshold = 1e-4; ///< ML aggregation threshold of the velocity AMG
@@ -136,23 +145,20 @@ namespace FluidSurface
       /// `subsection linear solver`: the direct solver and the tolerance of both solvers.
       ReusedFactorizationSolver::Parameters linear_solver;
 
+      /// Declares `subsection fixed surface solver` (and the linear-solver entries of `subsection flow`).
       static void
       declare(dealii::ParameterHandler &prm);
+      /// Reads them; Re, inertia and convection come from @p fluid.
       void
-      parse(dealii::ParameterHandler &prm);
+      parse(dealii::ParameterHandler &prm, const SurfaceFluid &fluid);
     };
 
-    /// A flow on @p geometry with default parameters (parse_parameters() may follow).
-    explicit SurfaceFlow(const SurfaceGeometry &geometry);
     /// A flow on @p geometry with parsed @p parameters.
     SurfaceFlow(const SurfaceGeometry &geometry, const Parameters &parameters);
 
-    /// Declares `subsection flow`.
+    /// Declares `subsection fixed surface solver` (Parameters::declare).
     static void
     declare_parameters(dealii::ParameterHandler &prm);
-    /// Reads `subsection flow`.
-    void
-    parse_parameters(dealii::ParameterHandler &prm);
     const Parameters &
     get_parameters() const
     {
@@ -195,10 +201,10 @@ namespace FluidSurface
     SolveInfo
     advance(const double time, const double tau);
 
-    /// F_kin = ½∫|u_h|².
+    /// F_kin = ½∫|u_h|² (EnergyFunctionals::kinetic_energy).
     double
     kinetic_energy() const;
-    /// D = (2/Re)∫|σ(u_h)|², so dF_kin/dt = −D for the exact flow.
+    /// D = (2/Re)∫|σ(u_h)|², so dF_kin/dt = −D for the exact flow (EnergyFunctionals::dissipation_rate).
     double
     dissipation_rate() const;
 
@@ -242,10 +248,20 @@ namespace FluidSurface
 
     void
     assemble(const double time, const double tau, const bool assemble_matrix);
+    /// One cell of assemble(): the flow terms (SurfaceFluid), the body force, the penalty or multiplier.
     void
     local_assemble(const typename dealii::DoFHandler<2, 3>::active_cell_iterator &cell,
                    ScratchData                                                   &scratch,
                    CopyData                                                      &copy) const;
+    /**
+     * The cell's matrices of the velocity AMG (block preconditioner): its velocity block rotated into node
+     * frames [t₁ t₂ n], or the low-order-refined operator on the 4 sub-cells with the penalty @p penalty.
+     */
+    void
+    assemble_amg_matrices(const typename dealii::DoFHandler<2, 3>::active_cell_iterator &cell,
+                          ScratchData                                                   &scratch,
+                          CopyData                                                      &copy,
+                          const double                                                   penalty) const;
     void
     copy_local_to_global(const CopyData &copy);
     /// Quadrature of the low-order-refined operator: 2×2 Gauss points on each of the 4 sub-cells.
@@ -272,7 +288,8 @@ namespace FluidSurface
     const SurfaceGeometry &geometry;
     MPI_Comm               communicator;
 
-    Parameters parameters;
+    Parameters   parameters;
+    SurfaceFluid fluid; ///< the terms of the flow, with parameters.Re
 
     // Terms switched by the scene.
     bool with_time_derivative = false;

@@ -6,6 +6,7 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace FluidSurface
 {
@@ -36,6 +37,13 @@ namespace FluidSurface
   throw_invalid_entry(const std::string &entry_path,
                       const std::string &value,
                       const std::string &expected);
+
+  /// Throws an InputError "FILE, line N: entry 'subsection/entry' is set, but scene SCENE does not use it"
+  /// for the first entry of @p unused that the last file read by parse_parameter_file() sets. An element of
+  /// @p unused is "subsection/entry", or "subsection/*" for every entry of a subsection. Entries set by
+  /// other means (ParameterHandler::set) are not checked.
+  void
+  reject_entries_unused_by_scene(const std::vector<std::string> &unused, const std::string &scene);
 
   /**
    * Prints every parameter as a valid parameter file: for each entry its help

@@ -12,9 +12,16 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/numerics/data_out.h>
 
-#include <fluid_surface/linear_algebra/bordered_system.h>
+#include <fluid_surface/flow/surface_fluid.h>
 #include <fluid_surface/linear_algebra/reused_factorization_solver.h>
 #include <fluid_surface/geometry/surface_geometry.h>
+#include <fluid_surface/linear_algebra/bordered_system.h>
+#include <fluid_surface/model/bending_force.h>
+#include <fluid_surface/model/dof_layout.h>
+#include <fluid_surface/model/local_system.h>
+#include <fluid_surface/model/mesh_redistribution.h>
+#include <fluid_surface/model/momentum_constraints.h>
+#include <fluid_surface/model/volume_constraint.h>
 
 #include <array>
 #include <memory>
@@ -26,80 +33,16 @@ namespace FluidSurface
   class CheckpointData;
 
   /**
-   * Helfrich bending force b = (1/Be)(−Δ_S H − H(|B|² − ½H²)) ν, discretized
-   * with the bending scalar y: (y, φ) − (∇_S κ, ∇_S φ) + (c κ, φ) = 0 with the
-   * lagged coefficient c = |B^m|² − ½(H^m)² (B^m = −P∇ñ^m), and the force
-   * (1/Be)(y ñ, v) in the momentum equation. κ is the new surface's mean
-   * curvature from MeshRedistribution.
-   */
-  class BendingForce
-  {
-  public:
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-    void
-    parse_parameters(dealii::ParameterHandler &prm);
-
-    bool   enabled        = true;
-    double bending_number = 1.0; ///< Be = ρU²L²/κ_b; F_bend = (1/2Be)∫H²
-  };
-
-  /**
-   * Global multiplier γ for the enclosed volume: the force −γν and the
-   * constraint (u·ñ, 1) = −(V(S^m) − V₀)/τ, whose right-hand side also removes
-   * any volume drift of earlier steps.
-   */
-  class VolumeConstraint
-  {
-  public:
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-    void
-    parse_parameters(dealii::ParameterHandler &prm);
-
-    bool enabled = true;
-  };
-
-  /**
-   * BGN-type tangential mesh redistribution: the new position Y follows the
-   * normal velocity, (Y·ñ, φ)_h = (X^m·ñ, φ)_h + τ(u·ñ, φ)_h, and its
-   * tangential motion keeps the mesh regular through (κñ, η)_h + (∇_S Y, ∇_S η) = 0,
-   * i.e. κñ = Δ_S Y (κ = H of the new surface). (·,·)_h is the nodal
-   * (Gauss–Lobatto) quadrature when lumping is on, as in Barrett–Garcke–Nürnberg.
-   */
-  class MeshRedistribution
-  {
-  public:
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-    void
-    parse_parameters(dealii::ParameterHandler &prm);
-
-    bool   lumped            = true;
-    double relaxation_time   = 0.05; ///< T_r of the tangential damping (0: plain BGN)
-    bool   follow_rigid_motion = true; ///< the damping relaxes towards X^m + τR (R: rigid motion of the shape)
-    double shape_motion_cutoff = 0.01; ///< ε of the regularized fit of R
-    double mesh_quality_floor = 0.05; ///< a run stops when the mesh quality falls below this
-  };
-
-  /**
-   * Material parameters of the in-plane viscous flow: Reynolds number and
-   * which inertial terms are assembled.
-   */
-  struct FlowCoefficients
-  {
-    double reynolds_number = 1.0; ///< Re = ρUL/η
-    bool   inertia         = true; ///< ∂_t u (the Stokes limit drops it)
-    bool   convection      = true; ///< ∇_w u with w = u − ∂_t X
-    bool   conserve_momenta = false; ///< multipliers keep ∫u = P₀ and ∫x × u = L₀ (with inertia)
-  };
-
-  /**
    * The fluid deformable surface (seed eqs. 1–4): the full 3D velocity u ∈ [Q2]³,
    * surface pressure p ∈ Q1, curvature κ and bending scalar y ∈ Q_k, the new
    * position Y ∈ [Q_k]³ and the volume multiplier γ, solved as one linear
    * system per step on the frozen surface S^m (all nonlinear coefficients
    * lagged), so that the chain u → Y → κ → y → bending force is implicit.
+   *
+   * The step system is assembled from the terms of its components (doc/scheme.md): the surface fluid
+   * (SurfaceFluid: inertia, convection, viscous stress, pressure, continuity), the BendingForce, the
+   * MeshRedistribution (kinematics and tangential redistribution), the VolumeConstraint and the
+   * MomentumConstraints. It owns `subsection initial state`; the components own theirs.
    */
   class FluidDeformableSurface
   {
@@ -118,8 +61,17 @@ namespace FluidSurface
 
     FluidDeformableSurface(SurfaceGeometry &geometry);
 
+    /// Declares the subsections of the components (flow, bending, volume constraint, mesh redistribution) and
+    /// `initial state`.
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+    /**
+     * Reads them; τ_max = @p maximum_time_step of the run bounds the drift-correction time from below.
+     * Rejects (InputError) entries that scene full does not use.
+     */
+    void
+    parse_parameters(dealii::ParameterHandler &prm, const double maximum_time_step);
+    /// As above with τ_max read from `time stepping/maximum time step`.
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
@@ -162,14 +114,14 @@ namespace FluidSurface
     double
     bending_energy(const double willmore_energy) const
     {
-      return bending.enabled ? willmore_energy / bending.bending_number : 0.0;
+      return bending.energy(willmore_energy);
     }
 
     /// Be of the bending force.
     double
     bending_number() const
     {
-      return bending.bending_number;
+      return bending.Be;
     }
 
     const dealii::DoFHandler<2, 3> &
@@ -219,12 +171,12 @@ namespace FluidSurface
     void
     add_output_fields(dealii::DataOut<2, 3> &data_out) const;
 
-    /// Velocity at the quadrature points of a geometry FEValues' cell.
-    static constexpr unsigned int velocity_component = 0;
-    static constexpr unsigned int pressure_component = 3;
-    static constexpr unsigned int curvature_component = 4;
-    static constexpr unsigned int bending_component   = 5;
-    static constexpr unsigned int position_component  = 6;
+    /// The components of u, p, κ, y and Y in the element (DofLayout).
+    static constexpr unsigned int velocity_component  = DofLayout::velocity_component;
+    static constexpr unsigned int pressure_component  = DofLayout::pressure_component;
+    static constexpr unsigned int curvature_component = DofLayout::curvature_component;
+    static constexpr unsigned int bending_component   = DofLayout::bending_component;
+    static constexpr unsigned int position_component  = DofLayout::new_position_component;
 
     /// Serialization of the fields a restart needs (u, previous position).
     const VectorType &
@@ -261,22 +213,47 @@ namespace FluidSurface
       value(const dealii::Point<3> &x) const;
     };
     /// The momenta of @p state on the current surface, and the rigid motion R whose normal velocity R·ν
-    /// fits u·ν in L² (regularized by `shape_motion_cutoff`): the motion of the shape, not of the fluid.
+    /// fits u·ν in L² (regularized by `rigid motion cutoff`): the motion of the shape, not of the fluid.
     RigidMotion
     rigid_motion(const VectorType &state) const;
     void
     setup_dofs();
     void
     set_initial_velocity();
+    /// Per-thread FEValues and point values of assemble_cell().
+    struct AssemblyScratch;
+    /**
+     * Assembles the step system of size @p tau on S^m (WorkStream over the cells): matrix, right-hand side,
+     * volume column and, if active, the rigid-motion columns and rows. @p motion is the rigid motion of the
+     * shape (the target of the tangential damping) and the momenta of u^m.
+     */
     void
     assemble(const double tau, const RigidMotion &motion);
+    /// One cell of assemble(): the Gauss-point terms, then the nodal terms (·,·)_h.
+    void
+    assemble_cell(const typename dealii::DoFHandler<2, 3>::active_cell_iterator &cell,
+                  const double                                                   tau,
+                  const double                                                   area_rate,
+                  const RigidMotion                                             &carried,
+                  AssemblyScratch                                               &scratch,
+                  LocalSystem                                                   &local) const;
+    /**
+     * The momentum and continuity rows at one Gauss point, the terms of SurfaceFluid:
+     * (1/τ)(u − u^m, v) + (G u^m, v) − (1/τ)(G^m (Y − X^m), v) + (2/Re)(σ(u), σ(v)) − (p, div_P v) (in the
+     * Stokes limit ε(u, v) instead of the inertia, no convection) and −(div_P u, q) = −(s, q), s = @p area_rate.
+     */
+    void
+    assemble_flow_terms(const SurfacePointValues &point,
+                        const double              tau,
+                        const double              area_rate,
+                        LocalSystem              &local) const;
     /// Y of @p flow_solution → the geometry's position field.
     void
     copy_new_position_to_geometry(const VectorType &flow_solution);
     /// The geometry's position X → the Y components of @p flow_vector (owned).
     void
     copy_position_into(VectorType &flow_vector) const;
-    /// (2/Re)‖σ(u)‖² of @p state on the current surface.
+    /// D = (2/Re)‖σ(u)‖² of @p state on the current surface (EnergyFunctionals::dissipation_rate).
     double
     dissipation_rate(const VectorType &state) const;
     /**
@@ -289,22 +266,24 @@ namespace FluidSurface
 
     SurfaceGeometry &geometry;
 
-    FlowCoefficients   flow;
-    BendingForce       bending;
-    VolumeConstraint   volume_constraint;
-    MeshRedistribution redistribution;
+    SurfaceFluid        flow;
+    BendingForce        bending;
+    VolumeConstraint    volume_constraint;
+    MeshRedistribution  redistribution;
+    MomentumConstraints momentum_constraints;
 
-    // Initial velocity: translation U plus rigid rotation ω e × (x − c) plus seeded noise.
-    dealii::Tensor<1, 3> translation_velocity;
-    double               initial_angular_velocity = 0;
-    bool                 equilibrium_rotation     = false; ///< ω₀ from the geometry's equilibrium shape
-    dealii::Tensor<1, 3> rotation_axis;
-    dealii::Point<3>     rotation_centre;
-    double               velocity_noise   = 0;
-    double               shape_noise      = 0;
-    unsigned int         random_seed      = 1;
+    // `subsection initial state`: u₀ = U + ω₀ e × (x − c) + ε_u r(x), the shape perturbed by ε_X.
+    dealii::Tensor<1, 3> translation_velocity;    ///< U
+    double               angular_velocity{};      ///< ω₀
+    bool                 equilibrium_rotation{};  ///< ω₀ from the geometry's equilibrium shape
+    dealii::Tensor<1, 3> rotation_axis;           ///< e (normalized)
+    dealii::Point<3>     rotation_centre;         ///< c
+    double               velocity_perturbation{}; ///< ε_u
+    double               shape_perturbation{};    ///< ε_X
+    unsigned int         random_seed{};           ///< seed of the perturbations
 
     std::unique_ptr<dealii::FESystem<2, 3>> fe;
+    std::unique_ptr<const DofLayout>        layout; ///< the local DoFs of u, p, κ, y, Y
     dealii::DoFHandler<2, 3>               dofs;
     dealii::IndexSet                       owned, relevant;
     dealii::AffineConstraints<double>      constraints;
@@ -320,20 +299,17 @@ namespace FluidSurface
     std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>> position_pairs;
     double                                 last_tau = 0;     ///< τ of the step that produced X^m
     double                                 last_step_tau = 0; ///< τ of the last advance()
-    double                                 target_volume = 0;
-    double                                 target_area   = 0;
-    bool                                   area_correction = true;
-    double                                 drift_correction_time = 0.01;
+    double                                 target_volume = 0; ///< V₀
+    double                                 target_area   = 0; ///< A₀
 
     /// The step's LU factorization, kept across steps (`subsection linear solver`).
     ReusedFactorizationSolver                       linear_solver;
     dealii::TimerOutput                            *step_timer            = nullptr;
-    /// Stokes limit: ε of the regularization ε(u, v) and the columns (r_k, v) of the rigid motions
-    /// r = e_1, e_2, e_3, e_1 × x, e_2 × x, e_3 × x, whose multipliers enforce ∫u = 0, ∫x × u = 0.
-    double                                          stokes_regularization = 1e-6;
+    /// The columns (r_k, v) of the rigid motions r = e_1, e_2, e_3, e_1 × x, e_2 × x, e_3 × x, whose
+    /// multipliers enforce ∫u = 0, ∫x × u = 0 (Stokes limit) or hold the momenta (MomentumConstraints).
     std::array<VectorType, 6>                       rigid_columns;
     /// The constraint rows of the rigid motions: (r_k, u) in the Stokes limit; with inertia the momenta on
-    /// the new surface, linearized in Y (their Y entries; see assemble()).
+    /// the new surface, linearized in Y (their Y entries; MomentumConstraints::assemble_new_surface_rows()).
     std::array<VectorType, 6>                       rigid_rows;
     /// Values g_k of the rigid-motion constraints (r_k, u) = g_k: 0 in the Stokes limit, the initial
     /// ∫u and ∫x × u with `conserve momenta`.
@@ -342,7 +318,7 @@ namespace FluidSurface
     bool
     rigid_constraints() const
     {
-      return !flow.inertia || flow.conserve_momenta;
+      return momentum_constraints.active();
     }
     /// The state and multipliers of the last step: the initial guess of the GMRES solve.
     BorderedSystem::BlockVector                     last_solution;
@@ -350,7 +326,7 @@ namespace FluidSurface
     double
     drift_time(const double tau) const
     {
-      return std::max(tau, drift_correction_time);
+      return volume_constraint.drift_time(tau);
     }
   };
 } // namespace FluidSurface

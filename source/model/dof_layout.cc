@@ -1,0 +1,32 @@
+#include <fluid_surface/model/dof_layout.h>
+
+namespace FluidSurface
+{
+  using namespace dealii;
+
+  DofLayout::DofLayout(const FiniteElement<2, 3> &fe)
+  {
+    AssertDimension(fe.n_components(), n_components);
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      {
+        const unsigned int c = fe.system_to_component_index(i).first;
+        if (c < pressure_component)
+          velocity.push_back(i);
+        else if (c == pressure_component)
+          pressure.push_back(i);
+        else if (c == curvature_component)
+          curvature.push_back(i);
+        else if (c == bending_component)
+          bending_scalar.push_back(i);
+        else
+          new_position.push_back(i);
+      }
+    // u, p are Taylor–Hood [Q2]³ × Q1; κ, y, Y share the degree k of the geometry.
+    Assert(fe.base_element(fe.component_to_base_index(velocity_component).first).degree == 2, ExcInternalError());
+    Assert(fe.base_element(fe.component_to_base_index(pressure_component).first).degree == 1, ExcInternalError());
+    AssertDimension(velocity.size(), 3 * fe.base_element(fe.component_to_base_index(0).first).n_dofs_per_cell());
+    AssertDimension(new_position.size(), 3 * curvature.size());
+    AssertDimension(bending_scalar.size(), curvature.size());
+    (void)fe;
+  }
+} // namespace FluidSurface
