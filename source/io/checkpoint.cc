@@ -437,9 +437,9 @@ namespace FluidSurface
                       "false: start a new run (and remove old checkpoints). A resumed run continues exactly as "
                       "the run that wrote the checkpoint would have: bit for bit on one MPI rank, to rounding on "
                       "several (as two uninterrupted parallel runs differ), also on a different number of ranks "
-                      "than the checkpoint's. The factorization kept across steps (linear solver/reuse factorization) is "
-                      "dropped at every checkpoint, so a run that writes no checkpoints differs from one that "
-                      "does at the linear solver tolerance.");
+                      "than the checkpoint's. The factorization kept across steps (linear solver/reuse "
+                      "factorization) is dropped at every checkpoint, so a run that writes no checkpoints "
+                      "differs from one that does at the linear solver tolerance.");
     prm.declare_entry("steps per run",
                       "0",
                       Patterns::Integer(0),

@@ -7,6 +7,7 @@
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 
+#include <cmath>
 #include <functional>
 
 namespace FluidSurface
