@@ -15,6 +15,7 @@
 #include <fluid_surface/io/checkpoint.h>
 #include <fluid_surface/model/fluid_deformable_surface.h>
 #include <fluid_surface/io/output_writer.h>
+#include <fluid_surface/postprocess/speed_postprocessor.h>
 #include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/geometry/surface_operators.h>
 
