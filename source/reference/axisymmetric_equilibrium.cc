@@ -148,6 +148,8 @@ namespace FluidSurface
         return d;
       }
 
+      /// The residual at @p x: the collocated shape equations with the pole and equator conditions, then the
+      /// equator angle and the relative area, volume (and angular momentum) defects.
       void
       residual(const std::vector<double> &x, std::vector<double> &R) const
       {
@@ -191,12 +193,21 @@ namespace FluidSurface
           R[w()] = (om * 4 * pi * S * I - L0) / inertia_scale();
       }
 
+      /// The Jacobian of residual() at @p x.
       void
       jacobian(const std::vector<double> &x, dealii::LAPACKFullMatrix<double> &J) const
       {
         const unsigned int n = size();
         J.reinit(n, n);
         J = 0;
+        add_shape_equation_jacobian(x, J);
+        add_constraint_jacobian(x, J);
+      }
+
+      /// The rows of the collocated shape equations (ψ, r, H, η at every node) of the Jacobian.
+      void
+      add_shape_equation_jacobian(const std::vector<double> &x, dealii::LAPACKFullMatrix<double> &J) const
+      {
         const double S = x[this->S()], sg = x[sigma()], Pr = x[P()], om = omega_of(x);
         for (unsigned int j = 0; j <= N; ++j)
           {
@@ -252,6 +263,13 @@ namespace FluidSurface
             else
               J(eta(j), eta(j)) = 1;
           }
+      }
+
+      /// The rows of the equator condition and the area, volume (and angular momentum) constraints.
+      void
+      add_constraint_jacobian(const std::vector<double> &x, dealii::LAPACKFullMatrix<double> &J) const
+      {
+        const double S = x[this->S()], om = omega_of(x);
         J(this->S(), psi(N)) = 1;
         double a = 0, v = 0, I = 0;
         for (unsigned int j = 0; j <= N; ++j)
@@ -275,6 +293,7 @@ namespace FluidSurface
           }
       }
 
+      /// Euclidean norm.
       static double
       norm(const std::vector<double> &v)
       {

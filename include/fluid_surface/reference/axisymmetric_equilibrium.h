@@ -29,8 +29,8 @@ namespace FluidSurface
    * on the half curve s ∈ [0, S] from the north pole to the equator, with pole conditions ψ = r = η = 0
    * (η(0) = 0 is the vanishing Hamiltonian, i.e. the free length) and equator conditions ψ = π/2, η = 0
    * (mirror symmetry), closed by the area and volume constraints (and ω I_zz = L when L is given).
-   * Here H = ψ' + sin ψ / r is positive on a sphere; the public accessors use the sign of doc/scheme.md
-   * (H = −2/R on a sphere with the outward normal).
+   * Here H = ψ' + sin ψ / r is positive on a sphere; the public accessors use the sign of the README's
+   * "Geometry" section (H = −2/R on a sphere with the outward normal).
    * The system is discretized by Chebyshev collocation in s/S (spectral accuracy) and solved by damped
    * Newton, starting from a spheroid of the same A and V, with continuation in the reduced volume when
    * needed and continuation in ω² (or L) from the resting shape.
@@ -55,17 +55,17 @@ namespace FluidSurface
     /// The inputs of one equilibrium computation (the entries of `subsection equilibrium`).
     struct Parameters
     {
-      double      area            = 12.566370614359172; ///< A, the surface area (4π: unit sphere area)
-      double      reduced_volume  = 0.75;               ///< v = V / ((4π/3)(A/(4π))^{3/2}), 0 < v ≤ 1
-      Branch      branch          = Branch::prolate;
-      double      bending_number  = 1.0;                ///< Be; F_bend = (1/(2Be))∫H²
-      Prescribed  prescribed      = Prescribed::angular_velocity;
-      double      angular_velocity = 0.0;               ///< ω, used when prescribed = angular_velocity
-      double      angular_momentum = 0.0;               ///< L = ω I_zz, used when prescribed = angular_momentum
-      std::string output_file      = "equilibrium.csv"; ///< CSV of the generating curve
-      unsigned int collocation_points         = 48;  ///< N: Chebyshev points 0..N on the half curve
-      unsigned int maximal_collocation_points = 512; ///< N is doubled up to this while under-resolved
-      unsigned int output_points              = 401; ///< rows of the CSV (equispaced in s)
+      double       area                       = 12.566370614359172; ///< A (4π: the unit sphere's area)
+      double       reduced_volume             = 0.75;  ///< v = V / ((4π/3)(A/(4π))^{3/2}), 0 < v ≤ 1
+      Branch       branch                     = Branch::prolate;
+      double       bending_number             = 1.0;   ///< `Be`; F_bend = (1/(2Be))∫H²
+      Prescribed   prescribed                 = Prescribed::angular_velocity; ///< which entry was given
+      double       angular_velocity           = 0.0;   ///< ω, used when prescribed = angular_velocity
+      double       angular_momentum           = 0.0;   ///< L = ω I_zz, used when prescribed = angular_momentum
+      std::string  output_file                = "equilibrium.csv"; ///< CSV of the generating curve
+      unsigned int collocation_points         = 48;    ///< N: Chebyshev points 0..N on the half curve
+      unsigned int maximal_collocation_points = 512;   ///< N is doubled up to this while under-resolved
+      unsigned int output_points              = 401;   ///< rows of the CSV (equispaced in s)
       double       newton_tolerance           = 1e-12; ///< Newton: relative size of the last update
     };
 
@@ -124,8 +124,8 @@ namespace FluidSurface
 
     /**
      * The constant p0 of the surface pressure p = p0 + ½ω²r² in the momentum equation (doc/scheme.md,
-     * "Unknowns and one step"; strong form −∇_S p − pHν − γν + b). It is minus the Lagrange multiplier σ of the area in
-     * G = F_bend − ½ω² I_zz + σA − PV, i.e. p0 = −(surface tension).
+     * "Unknowns and one step"; strong form −∇_S p − pHν − γν + b). It is minus the Lagrange multiplier σ of
+     * the area in G = F_bend − ½ω² I_zz + σA − PV, i.e. p0 = −(surface tension).
      */
     double
     p0() const;
@@ -193,7 +193,7 @@ namespace FluidSurface
 
     /**
      * The generating curve at arc length @p s ∈ [0, 2S] from the north pole: {r, z, ψ, H}, H = k_s + k_φ in
-     * the sign convention of doc/scheme.md (H = −2/R on a sphere).
+     * the sign convention of the README's "Geometry" section (H = −2/R on a sphere).
      */
     std::vector<double>
     curve_point(const double s) const;
