@@ -46,8 +46,8 @@ main()
   for (const Equilibrium::Branch branch : {Equilibrium::Branch::prolate, Equilibrium::Branch::oblate})
     {
       Equilibrium::Parameters parameters;
-      parameters.branch = branch;
-      parameters.omega  = 2;
+      parameters.branch           = branch;
+      parameters.angular_velocity = 2;
       Equilibrium equilibrium(parameters);
       equilibrium.solve();
 

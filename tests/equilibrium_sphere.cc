@@ -47,9 +47,9 @@ main()
       for (unsigned int k = 0; k < 2; ++k)
         {
           Equilibrium::Parameters parameters;
-          parameters.reduced_volume = 0.95;
-          parameters.branch         = branch;
-          parameters.omega          = std::sqrt(omega2 + (k == 0 ? -h : h));
+          parameters.reduced_volume   = 0.95;
+          parameters.branch           = branch;
+          parameters.angular_velocity = std::sqrt(omega2 + (k == 0 ? -h : h));
           Equilibrium equilibrium(parameters);
           equilibrium.solve();
           F[k] = equilibrium.bending_energy();

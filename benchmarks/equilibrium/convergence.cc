@@ -1,9 +1,10 @@
 // Convergence of the Chebyshev collocation solver for the rotating axisymmetric equilibria in the number N of
-// collocation intervals (design §5 table shapes: A = 4π, Be = 1, v = 0.75, Be ω² ∈ {0, 4}), and the
+// collocation intervals (the shapes of the reference table: A = 4π, Be = 1, v = 0.75, Be ω² ∈ {0, 4}), and the
 // predicted equilibria for the seed runs (spheroids [0.61, 0.61, 2.02] and [1.27, 1.27, 0.47] rotating at
 // ω0 = 4: same area, reduced volume and angular momentum L0 = 4 I_zz(spheroid)).
 //
 // Usage: convergence [--quick] RESULTS.csv   (summary on stdout)
+#include <fluid_surface/geometry/exact_geometry.h>
 #include <fluid_surface/reference/axisymmetric_equilibrium.h>
 
 #include <algorithm>
@@ -24,7 +25,7 @@ namespace
     const char         *name;
     Equilibrium::Branch branch;
     double              Be_omega2;
-    double              reference_bending, reference_inertia; // design §5
+    double              reference_bending, reference_inertia; // reference table, 6 digits
   };
 
   /// Solves @p repetitions times; returns the fastest wall time of solve() in seconds.
@@ -72,24 +73,24 @@ main(int argc, char **argv)
   std::fprintf(out, "shape,N,unknowns,bending_energy,inertia_zz,p0,gamma,error_bending_energy,error_inertia_zz,"
                     "error_p0,wall_time_s\n");
 
-  std::printf("Design §5 table (A = 4π, Be = 1, v = 0.75), N = 48 (default):\n");
-  std::printf("| branch | Be·ω² | ½∫H² (ours) | ½∫H² (design) | I_zz (ours) | I_zz (design) | p0 | γ | solve time |\n");
+  std::printf("Reference table (A = 4π, Be = 1, v = 0.75), N = 48 (default):\n");
+  std::printf("| branch | Be·ω² | ½∫H² (ours) | ½∫H² (reference) | I_zz (ours) | I_zz (reference) | p0 | γ | solve time |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
   for (const Shape &shape : shapes)
     {
       Equilibrium::Parameters parameters;
-      parameters.branch = shape.branch;
-      parameters.omega  = std::sqrt(shape.Be_omega2);
+      parameters.branch           = shape.branch;
+      parameters.angular_velocity = std::sqrt(shape.Be_omega2);
 
-      parameters.n_collocation   = finest;
-      parameters.max_collocation = finest;
+      parameters.collocation_points         = finest;
+      parameters.maximal_collocation_points = finest;
       Equilibrium reference(parameters);
       reference.solve();
 
       for (const unsigned int N : sizes)
         {
-          parameters.n_collocation   = N;
-          parameters.max_collocation = N; // fixed N: no automatic doubling
+          parameters.collocation_points         = N;
+          parameters.maximal_collocation_points = N; // fixed N: no automatic doubling
           Equilibrium  equilibrium(parameters);
           const double time = timed_solve(equilibrium, repetitions);
           std::fprintf(out, "%s,%u,%u,%.15g,%.15g,%.15g,%.15g,%.3e,%.3e,%.3e,%.3e\n", shape.name, N, 4 * (N + 1) + 3,
@@ -112,20 +113,20 @@ main(int argc, char **argv)
   const double axes[2][2] = {{0.61, 2.02}, {1.27, 0.47}};
   for (unsigned int k = 0; k < 2; ++k)
     {
-      const Equilibrium::Spheroid spheroid = Equilibrium::spheroid(axes[k][0], axes[k][1]);
-      Equilibrium::Parameters     parameters;
-      parameters.branch         = (k == 0 ? Equilibrium::Branch::prolate : Equilibrium::Branch::oblate);
-      parameters.area           = spheroid.area;
-      parameters.reduced_volume = spheroid.reduced_volume;
-      parameters.prescribed     = Equilibrium::Prescribed::angular_momentum;
-      parameters.L              = 4 * spheroid.inertia_zz;
+      const SpheroidMeasures  spheroid = exact_spheroid_measures(axes[k][0], axes[k][1]);
+      Equilibrium::Parameters parameters;
+      parameters.branch           = (k == 0 ? Equilibrium::Branch::prolate : Equilibrium::Branch::oblate);
+      parameters.area             = spheroid.area;
+      parameters.reduced_volume   = spheroid.reduced_volume;
+      parameters.prescribed       = Equilibrium::Prescribed::angular_momentum;
+      parameters.angular_momentum = 4 * spheroid.inertia_zz;
       Equilibrium equilibrium(parameters);
       equilibrium.solve();
       std::printf("| [%g, %g, %g] | %.8f | %.8f | %.8f | %.8f | %.8f | %.6f | %.6f | %.6f | %.6f | %.6f | %.6f | %.6f | "
                   "%.6f | %.6f |\n",
                   axes[k][0], axes[k][0], axes[k][1], spheroid.area, spheroid.reduced_volume, spheroid.inertia_zz,
-                  spheroid.willmore, parameters.L, equilibrium.angular_velocity(), equilibrium.bending_energy(),
-                  equilibrium.inertia_zz(), equilibrium.kinetic_energy(), equilibrium.p0(), equilibrium.gamma(),
+                  spheroid.willmore, parameters.angular_momentum, equilibrium.angular_velocity(),
+                  equilibrium.bending_energy(), equilibrium.inertia_zz(), equilibrium.kinetic_energy(), equilibrium.p0(), equilibrium.gamma(),
                   equilibrium.equatorial_radius(), equilibrium.max_radius(), equilibrium.polar_height());
     }
 
@@ -134,12 +135,12 @@ main(int argc, char **argv)
   const double seed_omega[2] = {2.324, 3.864};
   for (unsigned int k = 0; k < 2; ++k)
     {
-      const Equilibrium::Spheroid spheroid = Equilibrium::spheroid(axes[k][0], axes[k][1]);
-      Equilibrium::Parameters     parameters;
-      parameters.branch         = (k == 0 ? Equilibrium::Branch::prolate : Equilibrium::Branch::oblate);
-      parameters.area           = spheroid.area;
-      parameters.reduced_volume = spheroid.reduced_volume;
-      parameters.omega          = seed_omega[k];
+      const SpheroidMeasures  spheroid = exact_spheroid_measures(axes[k][0], axes[k][1]);
+      Equilibrium::Parameters parameters;
+      parameters.branch           = (k == 0 ? Equilibrium::Branch::prolate : Equilibrium::Branch::oblate);
+      parameters.area             = spheroid.area;
+      parameters.reduced_volume   = spheroid.reduced_volume;
+      parameters.angular_velocity = seed_omega[k];
       Equilibrium equilibrium(parameters);
       equilibrium.solve();
       std::printf("| %s | %.3f | %.6f | %.6f | %.6f | %.4f |\n", k == 0 ? "prolate" : "oblate", seed_omega[k],

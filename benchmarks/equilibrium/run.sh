@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Convergence of the rotating axisymmetric equilibrium solver (design §5) in the number N of Chebyshev
-# collocation intervals, the reproduction of the design table, and the predicted equilibria of the seed runs.
+# Convergence of the rotating axisymmetric equilibrium solver in the number N of Chebyshev
+# collocation intervals, the reproduction of the reference table, and the predicted equilibria of the seed runs.
 #
 # Usage, from the repository root:  benchmarks/equilibrium/run.sh [--quick]
 # Needs the built library: $BUILD_DIR (default: build) must hold libfluid_surface_library.so. The small driver

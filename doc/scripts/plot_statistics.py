@@ -13,7 +13,7 @@ the Agg backend is used, so no display is required.
 
 Input
 -----
-``statistics`` as written by the program (design.md section 4): ``# N: name``
+``statistics`` as written by the program (README, "Running"): ``# N: name``
 header lines followed by whitespace-separated rows.  Columns are looked up by
 *name*, never by position.  A partial last line (a run that is still writing)
 and other malformed rows are skipped with a note on stderr.  If the time goes
@@ -39,7 +39,9 @@ A sixth cell lists the final values.  --marks t ... puts red diamonds at
 these times on every panel (the seed marks its snapshot times so).
 
 Without -o the figure is written next to the statistics file as
-``statistics.png``.
+``statistics.png``.  The title is --title, else the run's name: the results
+directory relative to the working directory (e.g. ``results/prolate``), or its
+last two path components when it lies elsewhere; never an absolute path.
 """
 
 import argparse
@@ -203,6 +205,19 @@ def mark(ax, t, y, marks, log=False):
             ax.plot(tm, math.exp(ym) if log else ym, "D", color="red", ms=6, zorder=5)
 
 
+def run_name(statistics_path):
+    """The run's name for the title: the directory of the statistics file relative to the working
+    directory (e.g. 'results/prolate'); the directory's own name when it is the working directory; its
+    last two components when it lies outside the working directory."""
+    directory = os.path.dirname(os.path.abspath(statistics_path))
+    relative = os.path.relpath(directory)
+    if relative == ".":
+        return os.path.basename(directory) or "statistics"
+    if relative == ".." or relative.startswith(".." + os.sep):
+        return os.path.join(*directory.split(os.sep)[-2:]) or "statistics"
+    return relative
+
+
 def fmt(x):
     return "n/a" if x is None or not np.isfinite(x) else "%.6g" % x
 
@@ -217,7 +232,8 @@ def main():
                         help="window of <omega> computed from the statistics (default 5 10)")
     parser.add_argument("--marks", nargs="+", type=float, default=[], metavar="T",
                         help="times marked by red diamonds (e.g. the snapshot times)")
-    parser.add_argument("--title", help="figure title (default: the results directory)")
+    parser.add_argument("--title", help="figure title (default: the run's name, the results directory "
+                        "relative to the working directory)")
     args = parser.parse_args()
 
     stats, skipped, last_partial = read_statistics(args.statistics)
@@ -394,7 +410,7 @@ def main():
     axS.text(0.0, 0.95, "\n".join(lines), va="top", ha="left", fontsize=10.5,
              transform=axS.transAxes, linespacing=1.7)
 
-    title = args.title or os.path.dirname(os.path.abspath(args.statistics))
+    title = args.title or run_name(args.statistics)
     fig.suptitle(title, fontsize=12)
     fig.tight_layout(rect=(0, 0, 1, 0.97))
 

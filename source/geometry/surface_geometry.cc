@@ -14,8 +14,9 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/geometry/exact_geometry.h>
 #include <fluid_surface/geometry/surface_geometry.h>
+#include <fluid_surface/io/parameter_file.h>
 
 #include <cmath>
 #include <filesystem>
@@ -344,7 +345,7 @@ namespace FluidSurface
     m.volume = local[1];
     for (unsigned int d = 0; d < 3; ++d)
       m.centre_of_mass[d] = local[2 + d] / m.area;
-    m.reduced_volume = m.volume / (4.0 * numbers::PI / 3.0 * std::pow(m.area / (4.0 * numbers::PI), 1.5));
+    m.reduced_volume = reduced_volume_of(m.area, m.volume);
     m.mesh_quality   = Utilities::MPI::min(min_quality, communicator);
     return m;
   }
@@ -376,15 +377,17 @@ namespace FluidSurface
       }
   }
 
-  double
-  SurfaceGeometry::compute_curvature()
+  void
+  SurfaceGeometry::assemble_curvature_system(TrilinosWrappers::SparseMatrix &mass,
+                                             VectorType                     &rhs_curvature,
+                                             VectorType                     &rhs_normal) const
   {
     DynamicSparsityPattern dsp(relevant_dofs);
     DoFTools::make_sparsity_pattern(position_dofs, dsp, constraints, false);
     SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, communicator, relevant_dofs);
-    TrilinosWrappers::SparseMatrix mass;
     mass.reinit(owned_dofs, owned_dofs, dsp, communicator);
-    VectorType rhs_curvature(owned_dofs, communicator), rhs_normal(owned_dofs, communicator);
+    rhs_curvature.reinit(owned_dofs, communicator);
+    rhs_normal.reinit(owned_dofs, communicator);
 
     const QGauss<2>                      q = quadrature();
     FEValues<2, 3>                       fe_values(mapping(), fe(), q, update_values | update_gradients |
@@ -422,6 +425,63 @@ namespace FluidSurface
     mass.compress(VectorOperation::add);
     rhs_curvature.compress(VectorOperation::add);
     rhs_normal.compress(VectorOperation::add);
+  }
+
+  void
+  SurfaceGeometry::normalize_normal_field()
+  {
+    VectorType owned(owned_dofs, communicator);
+    owned = normal_ghosted;
+    const VectorType &n = normal_ghosted;
+    for_each_owned_node(position_dofs, [&](const std::array<types::global_dof_index, 3> &node) {
+      const double norm = std::sqrt(n[node[0]] * n[node[0]] + n[node[1]] * n[node[1]] + n[node[2]] * n[node[2]]);
+      for (unsigned int d = 0; d < 3; ++d)
+        owned[node[d]] = n[node[d]] / norm;
+    });
+    owned.compress(VectorOperation::insert);
+    normal_ghosted = owned;
+  }
+
+  void
+  SurfaceGeometry::update_nodal_mean_curvature()
+  {
+    VectorType        owned(owned_dofs, communicator);
+    const VectorType &n = normal_ghosted;
+    const VectorType &k = curvature_ghosted;
+    for_each_owned_node(position_dofs, [&](const std::array<types::global_dof_index, 3> &node) {
+      const double h = k[node[0]] * n[node[0]] + k[node[1]] * n[node[1]] + k[node[2]] * n[node[2]];
+      for (unsigned int d = 0; d < 3; ++d)
+        owned[node[d]] = h;
+    });
+    owned.compress(VectorOperation::insert);
+    mean_curvature_ghosted = owned;
+  }
+
+  double
+  SurfaceGeometry::willmore_energy() const
+  {
+    const QGauss<2>                  q = quadrature();
+    const FEValuesExtractors::Vector vec(0);
+    double                           local_energy = 0;
+    std::vector<Tensor<1, 3>>        kappa(q.size());
+    FEValues<2, 3>                   fe_values_kappa(mapping(), fe(), q, update_values | update_JxW_values);
+    for (const auto &cell : position_dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values_kappa.reinit(cell);
+          fe_values_kappa[vec].get_function_values(curvature_ghosted, kappa);
+          for (unsigned int k = 0; k < q.size(); ++k)
+            local_energy += 0.5 * kappa[k].norm_square() * fe_values_kappa.JxW(k);
+        }
+    return Utilities::MPI::sum(local_energy, communicator);
+  }
+
+  double
+  SurfaceGeometry::compute_curvature()
+  {
+    TrilinosWrappers::SparseMatrix mass;
+    VectorType                     rhs_curvature, rhs_normal;
+    assemble_curvature_system(mass, rhs_curvature, rhs_normal);
 
     TrilinosWrappers::PreconditionJacobi jacobi;
     jacobi.initialize(mass);
@@ -435,46 +495,8 @@ namespace FluidSurface
     };
     solve(rhs_curvature, curvature_ghosted);
     solve(rhs_normal, normal_ghosted);
-
-    // ñ is normalized node by node.
-    {
-      VectorType owned(owned_dofs, communicator);
-      owned = normal_ghosted;
-      const VectorType &n = normal_ghosted;
-      for_each_owned_node(position_dofs, [&](const std::array<types::global_dof_index, 3> &node) {
-        const double norm = std::sqrt(n[node[0]] * n[node[0]] + n[node[1]] * n[node[1]] + n[node[2]] * n[node[2]]);
-        for (unsigned int d = 0; d < 3; ++d)
-          owned[node[d]] = n[node[d]] / norm;
-      });
-      owned.compress(VectorOperation::insert);
-      normal_ghosted = owned;
-    }
-    // Nodal H = κ·ñ, repeated in the three components of each node.
-    {
-      VectorType        owned(owned_dofs, communicator);
-      const VectorType &n = normal_ghosted;
-      const VectorType &k = curvature_ghosted;
-      for_each_owned_node(position_dofs, [&](const std::array<types::global_dof_index, 3> &node) {
-        const double h = k[node[0]] * n[node[0]] + k[node[1]] * n[node[1]] + k[node[2]] * n[node[2]];
-        for (unsigned int d = 0; d < 3; ++d)
-          owned[node[d]] = h;
-      });
-      owned.compress(VectorOperation::insert);
-      mean_curvature_ghosted = owned;
-    }
-
-    // Willmore energy ½∫|κ|².
-    double                      local_energy = 0;
-    std::vector<Tensor<1, 3>>   kappa(q.size());
-    FEValues<2, 3>              fe_values_kappa(mapping(), fe(), q, update_values | update_JxW_values);
-    for (const auto &cell : position_dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values_kappa.reinit(cell);
-          fe_values_kappa[vec].get_function_values(curvature_ghosted, kappa);
-          for (unsigned int k = 0; k < q.size(); ++k)
-            local_energy += 0.5 * kappa[k].norm_square() * fe_values_kappa.JxW(k);
-        }
-    return Utilities::MPI::sum(local_energy, communicator);
+    normalize_normal_field();
+    update_nodal_mean_curvature();
+    return willmore_energy();
   }
 } // namespace FluidSurface

@@ -32,20 +32,6 @@ namespace FluidSurface
     };
   } // namespace
 
-  SpeedPostprocessor::SpeedPostprocessor()
-    : DataPostprocessorScalar<3>("speed", update_values)
-  {}
-
-  void
-  SpeedPostprocessor::evaluate_vector_field(const DataPostprocessorInputs::Vector<3> &inputs,
-                                            std::vector<Vector<double>>              &computed) const
-  {
-    for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
-      computed[q](0) = std::sqrt(inputs.solution_values[q](0) * inputs.solution_values[q](0) +
-                                 inputs.solution_values[q](1) * inputs.solution_values[q](1) +
-                                 inputs.solution_values[q](2) * inputs.solution_values[q](2));
-  }
-
   void
   OutputWriter::declare_parameters(ParameterHandler &prm)
   {
@@ -83,24 +69,26 @@ namespace FluidSurface
   OutputWriter::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("output");
-    output_directory = prm.get("output directory");
-    if (output_directory.empty() || output_directory == "output" || output_directory == "output/")
+    parameters.output_directory = prm.get("output directory");
+    const std::string &name     = parameters.output_directory;
+    if (name.empty() || name == "output" || name == "output/")
       throw_invalid_entry("output/output directory",
-                          output_directory,
+                          name,
                           "a directory name other than '' and 'output' (the test harness owns 'output')");
-    output_interval = prm.get_double("output interval");
-    write_vtu       = prm.get_bool("write vtu");
-    subdivisions    = prm.get_integer("subdivisions");
-    overwrite       = prm.get_bool("overwrite");
-    screen_every    = prm.get_integer("screen interval");
-    show_wall_time  = prm.get_bool("report wall time");
+    parameters.output_interval  = prm.get_double("output interval");
+    parameters.write_vtu        = prm.get_bool("write vtu");
+    parameters.subdivisions     = prm.get_integer("subdivisions");
+    parameters.overwrite        = prm.get_bool("overwrite");
+    parameters.screen_interval  = prm.get_integer("screen interval");
+    parameters.report_wall_time = prm.get_bool("report wall time");
     prm.leave_subsection();
   }
 
   std::string
   OutputWriter::directory() const
   {
-    return output_directory.back() == '/' ? output_directory : output_directory + "/";
+    const std::string &name = parameters.output_directory;
+    return name.back() == '/' ? name : name + "/";
   }
 
   void
@@ -111,15 +99,15 @@ namespace FluidSurface
       {
         namespace fs = std::filesystem;
         std::error_code ec;
-        if (fs::exists(directory() + "statistics") && !overwrite && !resuming)
-          error = parameter_file_name() + ": entry 'output/output directory' = '" + output_directory +
+        if (fs::exists(directory() + "statistics") && !parameters.overwrite && !resuming)
+          error = parameter_file_name() + ": entry 'output/output directory' = '" + parameters.output_directory +
                   "' holds the results of another run (statistics); expected a new directory, "
                   "or 'overwrite = true' in subsection output, or a resumed run.";
         else
           {
             fs::create_directories(directory() + "checkpoint", ec);
             if (ec)
-              error = parameter_file_name() + ": entry 'output/output directory' = '" + output_directory +
+              error = parameter_file_name() + ": entry 'output/output directory' = '" + parameters.output_directory +
                       "': cannot create it (" + ec.message() + ").";
           }
       }
@@ -131,7 +119,8 @@ namespace FluidSurface
   bool
   OutputWriter::due(const double time) const
   {
-    return write_vtu && (times_and_names.empty() || time >= last_output_time + output_interval * (1 - 1e-10));
+    return parameters.write_vtu &&
+           (times_and_names.empty() || time >= last_output_time + parameters.output_interval * (1 - 1e-10));
   }
 
   void
@@ -139,7 +128,7 @@ namespace FluidSurface
                       const double                               time,
                       const std::function<void(DataOut<2, 3> &)> &add_fields)
   {
-    if (!write_vtu)
+    if (!parameters.write_vtu)
       return;
     DataOut<2, 3> data_out;
     data_out.attach_dof_handler(geometry.dof_handler());
@@ -153,21 +142,26 @@ namespace FluidSurface
                              vector3);
     if (add_fields)
       add_fields(data_out);
-    data_out.build_patches(geometry.mapping(), subdivisions, DataOut<2, 3>::curved_inner_cells);
+    data_out.build_patches(geometry.mapping(), parameters.subdivisions, DataOut<2, 3>::curved_inner_cells);
 
     const std::string name = "solution-" + Utilities::int_to_string(times_and_names.size(), 5) + ".vtu";
     data_out.write_vtu_in_parallel(directory() + name, geometry.get_communicator());
     times_and_names.emplace_back(time, name);
     last_output_time = time;
     if (Utilities::MPI::this_mpi_process(geometry.get_communicator()) == 0)
-      {
-        const std::string pvd = directory() + "solution.pvd";
-        {
-          std::ofstream out(pvd + ".tmp");
-          DataOutBase::write_pvd_record(out, times_and_names);
-        }
-        std::filesystem::rename(pvd + ".tmp", pvd);
-      }
+      write_pvd_file();
+  }
+
+  void
+  OutputWriter::write_pvd_file() const
+  {
+    // Written beside and renamed, so that a killed run never leaves a truncated solution.pvd.
+    const std::string pvd = directory() + "solution.pvd";
+    {
+      std::ofstream out(pvd + ".tmp");
+      DataOutBase::write_pvd_record(out, times_and_names);
+    }
+    std::filesystem::rename(pvd + ".tmp", pvd);
   }
 
   void
@@ -191,14 +185,7 @@ namespace FluidSurface
     for (unsigned int i = 0; i < n; ++i)
       times_and_names.emplace_back(data.get_double("output/file " + std::to_string(i) + " time"),
                                    data.get_string("output/file " + std::to_string(i) + " name"));
-    if (write_vtu && Utilities::MPI::this_mpi_process(communicator) == 0)
-      {
-        const std::string pvd = directory() + "solution.pvd";
-        {
-          std::ofstream out(pvd + ".tmp");
-          DataOutBase::write_pvd_record(out, times_and_names);
-        }
-        std::filesystem::rename(pvd + ".tmp", pvd);
-      }
+    if (parameters.write_vtu && Utilities::MPI::this_mpi_process(communicator) == 0)
+      write_pvd_file();
   }
 } // namespace FluidSurface

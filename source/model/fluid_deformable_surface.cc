@@ -14,6 +14,7 @@
 #include <fluid_surface/geometry/surface_operators.h>
 #include <fluid_surface/io/checkpoint.h>
 #include <fluid_surface/io/output_writer.h>
+#include <fluid_surface/postprocess/speed_postprocessor.h>
 #include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/linear_algebra/bordered_system.h>
 #include <fluid_surface/model/fluid_deformable_surface.h>

@@ -54,14 +54,14 @@ namespace FluidSurface
       throw_invalid_entry("diagnostics/axis", prm.get("axis"), "a non-zero vector");
     axis /= axis.norm();
     const auto w = Utilities::split_string_list(prm.get("angular velocity window"));
-    window_begin = Utilities::string_to_double(w[0]);
-    window_end   = Utilities::string_to_double(w[1]);
-    if (!(window_end > window_begin))
+    angular_velocity_window[0] = Utilities::string_to_double(w[0]);
+    angular_velocity_window[1] = Utilities::string_to_double(w[1]);
+    if (!(angular_velocity_window[1] > angular_velocity_window[0]))
       throw_invalid_entry("diagnostics/angular velocity window",
                           prm.get("angular velocity window"),
                           "t₀ < t₁");
-    reference_branch = prm.get("reference equilibrium");
-    n_section_angles = prm.get_integer("section angles");
+    reference_equilibrium = prm.get("reference equilibrium");
+    section_angles        = prm.get_integer("section angles");
     prm.leave_subsection();
   }
 
@@ -101,6 +101,135 @@ namespace FluidSurface
       Point<2> xi[2];
       Point<2> p[2];
     };
+
+    /// The plane of a section: its centre, the orthonormal in-plane directions e₁, e₂ and the normal n.
+    struct SectionPlane
+    {
+      const Point<3>     &centre;
+      const Tensor<1, 3> &e1, &e2;
+      Tensor<1, 3>        n;
+    };
+
+    /// A ray of the section at polar angle φ: its direction in plane coordinates and in space, and the
+    /// in-plane direction across it.
+    struct SectionRay
+    {
+      Tensor<1, 2> dir;
+      Tensor<1, 3> ray, across;
+    };
+
+    /// Whether the cell may meet the plane: cells whose nodes lie clearly on one side of it are skipped (the
+    /// margin covers the bulge of a curved cell beyond its nodes).
+    bool
+    cell_may_meet_plane(const CellMap &map, const SectionPlane &plane)
+    {
+      // A Lagrange position field: the nodes are the DoF values.
+      std::vector<Point<3>> nodes(map.fe.base_element(0).n_dofs_per_cell());
+      for (unsigned int i = 0; i < map.fe.n_dofs_per_cell(); ++i)
+        nodes[map.fe.system_to_component_index(i).second][map.fe.system_to_component_index(i).first] = map.X(i);
+      double d_min = 1e300, d_max = -1e300, size = 0;
+      for (const Point<3> &x : nodes)
+        {
+          const double d = (x - plane.centre) * plane.n;
+          d_min          = std::min(d_min, d);
+          d_max          = std::max(d_max, d);
+          size           = std::max(size, x.distance(nodes[0]));
+        }
+      const double margin = 0.1 * size;
+      return !(d_min > margin || d_max < -margin);
+    }
+
+    /// The piecewise linear section of one cell: the crossings of the plane with the two triangles of each
+    /// of the m × m sub-squares of the reference cell.
+    std::vector<Segment>
+    linear_section(const CellMap &map, const SectionPlane &plane)
+    {
+      constexpr unsigned int m = 4;
+      Point<2>               xi[m + 1][m + 1];
+      Point<2>               in_plane[m + 1][m + 1];
+      double                 dist[m + 1][m + 1];
+      for (unsigned int a = 0; a <= m; ++a)
+        for (unsigned int b = 0; b <= m; ++b)
+          {
+            xi[a][b]             = Point<2>(double(a) / m, double(b) / m);
+            const Tensor<1, 3> x = map.value(xi[a][b]) - plane.centre;
+            in_plane[a][b]       = Point<2>(x * plane.e1, x * plane.e2);
+            dist[a][b]           = x * plane.n;
+          }
+      std::vector<Segment> segments;
+      const unsigned int   triangles[2][3][2] = {{{0, 0}, {1, 0}, {1, 1}}, {{0, 0}, {1, 1}, {0, 1}}};
+      for (unsigned int a = 0; a < m; ++a)
+        for (unsigned int b = 0; b < m; ++b)
+          for (const auto &t : triangles)
+            {
+              Segment      s;
+              unsigned int n_crossings = 0;
+              for (unsigned int e = 0; e < 3; ++e)
+                {
+                  const unsigned int a0 = a + t[e][0], b0 = b + t[e][1];
+                  const unsigned int a1 = a + t[(e + 1) % 3][0], b1 = b + t[(e + 1) % 3][1];
+                  const double       d0 = dist[a0][b0], d1 = dist[a1][b1];
+                  if ((d0 >= 0) == (d1 >= 0) || n_crossings == 2)
+                    continue;
+                  const double w     = d0 / (d0 - d1);
+                  s.xi[n_crossings]  = xi[a0][b0] + w * (xi[a1][b1] - xi[a0][b0]);
+                  s.p[n_crossings]   = in_plane[a0][b0] + w * (in_plane[a1][b1] - in_plane[a0][b0]);
+                  ++n_crossings;
+                }
+              if (n_crossings == 2)
+                segments.push_back(s);
+            }
+      return segments;
+    }
+
+    /**
+     * The distance from the centre along @p ray to the curved cell, where the ray crosses the linear segment
+     * @p s (or its extension by half its length): Newton for (x(ξ) − c)·n = 0, (x(ξ) − c)·across = 0,
+     * started on the segment. Returns −1 when the ray misses the segment or the point lies outside the cell.
+     */
+    double
+    ray_distance(const CellMap &map, const SectionPlane &plane, const SectionRay &ray, const Segment &s)
+    {
+      const Tensor<1, 2> &dir = ray.dir;
+      const Tensor<1, 3> &n = plane.n, &across = ray.across;
+      // s·dir = p0 + w (p1 − p0) by Cramer's rule.
+      const Tensor<1, 2> D   = s.p[1] - s.p[0];
+      const double       det = -dir[0] * D[1] + D[0] * dir[1];
+      if (std::abs(det) < 1e-14 * (D.norm() + 1e-300))
+        return -1;
+      const double w = (dir[0] * s.p[0][1] - dir[1] * s.p[0][0]) / det;
+      const double r = (s.p[0][0] * (-D[1]) + D[0] * s.p[0][1]) / det;
+      if (w < -0.5 || w > 1.5 || r <= 0)
+        return -1;
+      Point<2> z = s.xi[0] + std::clamp(w, 0.0, 1.0) * (s.xi[1] - s.xi[0]);
+      bool     converged = false;
+      for (unsigned int it = 0; it < 20 && !converged; ++it)
+        {
+          const Tensor<1, 3> x = map.value(z) - plane.centre;
+          const Tensor<2, 3> J = map.jacobian(z);
+          const double       g0 = x * n, g1 = x * across;
+          double             A[2][2];
+          for (unsigned int a = 0; a < 2; ++a)
+            {
+              A[0][a] = n[0] * J[0][a] + n[1] * J[1][a] + n[2] * J[2][a];
+              A[1][a] = across[0] * J[0][a] + across[1] * J[1][a] + across[2] * J[2][a];
+            }
+          const double detA = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+          if (detA == 0)
+            break;
+          const Point<2> dz((A[1][1] * g0 - A[0][1] * g1) / detA, (-A[1][0] * g0 + A[0][0] * g1) / detA);
+          z -= dz;
+          converged = dz.norm() < 1e-12;
+          if (z.norm() > 3)
+            break;
+        }
+      // A point a hair outside the cell (the polynomial map extends smoothly) is kept: near a cell edge the
+      // neighbour's short sub-segment may miss the ray.
+      const double slack = 1e-3;
+      if (!converged || z[0] < -slack || z[0] > 1 + slack || z[1] < -slack || z[1] > 1 + slack)
+        return -1;
+      return (map.value(z) - plane.centre) * ray.ray;
+    }
   } // namespace
 
   std::vector<double>
@@ -110,8 +239,7 @@ namespace FluidSurface
                        const Tensor<1, 3>    &e2,
                        const unsigned int     n_angles)
   {
-    const Tensor<1, 3>  n = cross_product_3d(e1, e2);
-    const unsigned int  m = 4; // sub-grid of the starting guesses, m × m squares per cell
+    const SectionPlane  plane{centre, e1, e2, cross_product_3d(e1, e2)};
     std::vector<double> radius(n_angles, -1.0);
     CellMap             map{geometry.fe(), Vector<double>(geometry.fe().n_dofs_per_cell())};
 
@@ -119,107 +247,20 @@ namespace FluidSurface
       if (cell->is_locally_owned())
         {
           cell->get_dof_values(geometry.position(), map.X);
-          // Cells whose nodes lie clearly on one side of the plane are skipped (the margin covers the bulge
-          // of a curved cell beyond its nodes).
-          // A Lagrange position field: the nodes are the DoF values.
-          std::vector<Point<3>> nodes(map.fe.base_element(0).n_dofs_per_cell());
-          for (unsigned int i = 0; i < map.fe.n_dofs_per_cell(); ++i)
-            nodes[map.fe.system_to_component_index(i).second][map.fe.system_to_component_index(i).first] = map.X(i);
-          double d_min = 1e300, d_max = -1e300, size = 0;
-          for (const Point<3> &x : nodes)
-            {
-              const double d = (x - centre) * n;
-              d_min          = std::min(d_min, d);
-              d_max          = std::max(d_max, d);
-              size           = std::max(size, x.distance(nodes[0]));
-            }
-          const double margin = 0.1 * size;
-          if (d_min > margin || d_max < -margin)
+          if (!cell_may_meet_plane(map, plane))
             continue;
-
-          Point<2> xi[m + 1][m + 1];
-          Point<2> plane[m + 1][m + 1];
-          double   dist[m + 1][m + 1];
-          for (unsigned int a = 0; a <= m; ++a)
-            for (unsigned int b = 0; b <= m; ++b)
-              {
-                xi[a][b]             = Point<2>(double(a) / m, double(b) / m);
-                const Tensor<1, 3> x = map.value(xi[a][b]) - centre;
-                plane[a][b]          = Point<2>(x * e1, x * e2);
-                dist[a][b]           = x * n;
-              }
-          std::vector<Segment> segments;
-          const unsigned int   triangles[2][3][2] = {{{0, 0}, {1, 0}, {1, 1}}, {{0, 0}, {1, 1}, {0, 1}}};
-          for (unsigned int a = 0; a < m; ++a)
-            for (unsigned int b = 0; b < m; ++b)
-              for (const auto &t : triangles)
-                {
-                  Segment      s;
-                  unsigned int n_crossings = 0;
-                  for (unsigned int e = 0; e < 3; ++e)
-                    {
-                      const unsigned int a0 = a + t[e][0], b0 = b + t[e][1];
-                      const unsigned int a1 = a + t[(e + 1) % 3][0], b1 = b + t[(e + 1) % 3][1];
-                      const double       d0 = dist[a0][b0], d1 = dist[a1][b1];
-                      if ((d0 >= 0) == (d1 >= 0) || n_crossings == 2)
-                        continue;
-                      const double w     = d0 / (d0 - d1);
-                      s.xi[n_crossings]  = xi[a0][b0] + w * (xi[a1][b1] - xi[a0][b0]);
-                      s.p[n_crossings]   = plane[a0][b0] + w * (plane[a1][b1] - plane[a0][b0]);
-                      ++n_crossings;
-                    }
-                  if (n_crossings == 2)
-                    segments.push_back(s);
-                }
+          const std::vector<Segment> segments = linear_section(map, plane);
           if (segments.empty())
             continue;
-
           for (unsigned int j = 0; j < n_angles; ++j)
             {
-              const double       phi = 2 * numbers::PI * j / n_angles;
-              const Tensor<1, 2> dir({std::cos(phi), std::sin(phi)});
-              const Tensor<1, 3> ray    = std::cos(phi) * e1 + std::sin(phi) * e2;
-              const Tensor<1, 3> across = -std::sin(phi) * e1 + std::cos(phi) * e2;
+              const double     phi = 2 * numbers::PI * j / n_angles;
+              const SectionRay ray{Tensor<1, 2>({std::cos(phi), std::sin(phi)}),
+                                   std::cos(phi) * e1 + std::sin(phi) * e2,
+                                   -std::sin(phi) * e1 + std::cos(phi) * e2};
               for (const Segment &s : segments)
                 {
-                  // s·dir = p0 + w (p1 − p0) by Cramer's rule.
-                  const Tensor<1, 2> D   = s.p[1] - s.p[0];
-                  const double       det = -dir[0] * D[1] + D[0] * dir[1];
-                  if (std::abs(det) < 1e-14 * (D.norm() + 1e-300))
-                    continue;
-                  const double w = (dir[0] * s.p[0][1] - dir[1] * s.p[0][0]) / det;
-                  const double r = (s.p[0][0] * (-D[1]) + D[0] * s.p[0][1]) / det;
-                  if (w < -0.5 || w > 1.5 || r <= 0)
-                    continue;
-                  // Newton for (x(ξ) − c)·n = 0, (x(ξ) − c)·across = 0.
-                  Point<2> z = s.xi[0] + std::clamp(w, 0.0, 1.0) * (s.xi[1] - s.xi[0]);
-                  bool     converged = false;
-                  for (unsigned int it = 0; it < 20 && !converged; ++it)
-                    {
-                      const Tensor<1, 3> x = map.value(z) - centre;
-                      const Tensor<2, 3> J = map.jacobian(z);
-                      const double       g0 = x * n, g1 = x * across;
-                      double             A[2][2];
-                      for (unsigned int a = 0; a < 2; ++a)
-                        {
-                          A[0][a] = n[0] * J[0][a] + n[1] * J[1][a] + n[2] * J[2][a];
-                          A[1][a] = across[0] * J[0][a] + across[1] * J[1][a] + across[2] * J[2][a];
-                        }
-                      const double detA = A[0][0] * A[1][1] - A[0][1] * A[1][0];
-                      if (detA == 0)
-                        break;
-                      const Point<2> dz((A[1][1] * g0 - A[0][1] * g1) / detA, (-A[1][0] * g0 + A[0][0] * g1) / detA);
-                      z -= dz;
-                      converged = dz.norm() < 1e-12;
-                      if (z.norm() > 3)
-                        break;
-                    }
-                  // A point a hair outside the cell (the polynomial map extends smoothly) is kept: near a
-                  // cell edge the neighbour's short sub-segment may miss the ray.
-                  const double slack = 1e-3;
-                  if (!converged || z[0] < -slack || z[0] > 1 + slack || z[1] < -slack || z[1] > 1 + slack)
-                    continue;
-                  const double distance = (map.value(z) - centre) * ray;
+                  const double distance = ray_distance(map, plane, ray, s);
                   if (distance > 0)
                     radius[j] = std::max(radius[j], distance);
                 }
@@ -258,7 +299,7 @@ namespace FluidSurface
   std::pair<double, double>
   Diagnostics::l2_distance(const SurfaceGeometry &geometry, const AxisymmetricEquilibrium &shape) const
   {
-    return l2_distance(geometry, meridian_radii(shape, n_section_angles), shape.equatorial_radius());
+    return l2_distance(geometry, meridian_radii(shape, section_angles), shape.equatorial_radius());
   }
 
   std::pair<double, double>
@@ -275,11 +316,11 @@ namespace FluidSurface
     const Point<3> c(geometry.measure().centre_of_mass);
     // Axial section: φ is the polar angle from e towards e⊥, as in meridian_radius().
     const double axial =
-      polar_l2_distance(section_polar_radius(geometry, c, axis, normal_direction, n_section_angles), meridian);
+      polar_l2_distance(section_polar_radius(geometry, c, axis, normal_direction, section_angles), meridian);
     const double equatorial =
       polar_l2_distance(section_polar_radius(geometry, c, normal_direction, cross_product_3d(axis, normal_direction),
-                                             n_section_angles),
-                        std::vector<double>(n_section_angles, equator));
+                                             section_angles),
+                        std::vector<double>(section_angles, equator));
     return {axial, equatorial};
   }
 
@@ -287,30 +328,32 @@ namespace FluidSurface
   Diagnostics::set_reference(const Values &initial_values, const double bending_number, std::ostream &out)
   {
     reference_shape.reset();
-    if (reference_branch == "none")
+    if (reference_equilibrium == "none")
       return;
     AxisymmetricEquilibrium::Parameters p;
-    p.area           = initial_values.area;
-    p.reduced_volume = initial_values.reduced_volume;
-    p.branch         = (reference_branch == "oblate" ? AxisymmetricEquilibrium::Branch::oblate :
-                                                       AxisymmetricEquilibrium::Branch::prolate);
-    p.bending_number = bending_number;
-    p.prescribed     = AxisymmetricEquilibrium::Prescribed::angular_momentum;
-    p.L              = initial_values.angular_momentum * axis;
-    reference_shape  = std::make_unique<AxisymmetricEquilibrium>(p);
+    p.area             = initial_values.area;
+    p.reduced_volume   = initial_values.reduced_volume;
+    p.branch           = (reference_equilibrium == "oblate" ? AxisymmetricEquilibrium::Branch::oblate :
+                                                              AxisymmetricEquilibrium::Branch::prolate);
+    p.bending_number   = bending_number;
+    p.prescribed       = AxisymmetricEquilibrium::Prescribed::angular_momentum;
+    p.angular_momentum = initial_values.angular_momentum * axis;
+    reference_shape    = std::make_unique<AxisymmetricEquilibrium>(p);
     try
       {
         reference_shape->solve();
       }
     catch (const std::exception &exc)
       {
-        throw InputError(parameter_file_name() + ": diagnostics/reference equilibrium = " + reference_branch +
+        throw InputError(parameter_file_name() + ": diagnostics/reference equilibrium = " + reference_equilibrium +
                          ": no rotating equilibrium with the run's area " + std::to_string(p.area) +
                          ", reduced volume " + std::to_string(p.reduced_volume) + " and angular momentum " +
-                         std::to_string(p.L) + " (" + exc.what() + "); expected a branch that exists, or none.");
+                         std::to_string(p.angular_momentum) + " (" + exc.what() +
+                         "); expected a branch that exists, or none.");
       }
-    reference_meridian = meridian_radii(*reference_shape, n_section_angles);
-    out << "   E(L2) reference: " << reference_branch << " equilibrium at L = " << std::setprecision(8) << p.L
+    reference_meridian = meridian_radii(*reference_shape, section_angles);
+    out << "   E(L2) reference: " << reference_equilibrium << " equilibrium at L = " << std::setprecision(8)
+        << p.angular_momentum
         << ": ω = " << reference_shape->angular_velocity() << ", F_bend = " << reference_shape->bending_energy()
         << ", I_zz = " << reference_shape->inertia_zz() << std::endl;
   }
@@ -330,7 +373,7 @@ namespace FluidSurface
       }
     AxisymmetricEquilibrium::Parameters p = reference_shape->parameters();
     p.prescribed                          = AxisymmetricEquilibrium::Prescribed::angular_velocity;
-    p.omega                               = omega_integral / omega_time;
+    p.angular_velocity                    = omega_integral / omega_time;
     AxisymmetricEquilibrium shape(p);
     try
       {
@@ -467,9 +510,10 @@ namespace FluidSurface
         min_l2_time     = time;
       }
     // ⟨ω⟩ by the rectangle rule over the steps ending inside the window.
-    if (tau > 0 && time > window_begin && time - tau < window_end)
+    const double t0 = angular_velocity_window[0], t1 = angular_velocity_window[1];
+    if (tau > 0 && time > t0 && time - tau < t1)
       {
-        const double overlap = std::min(time, window_end) - std::max(time - tau, window_begin);
+        const double overlap = std::min(time, t1) - std::max(time - tau, t0);
         omega_integral += v.angular_velocity * overlap;
         omega_time += overlap;
       }

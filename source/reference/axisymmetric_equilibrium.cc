@@ -1,11 +1,11 @@
-#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <fluid_surface/reference/axisymmetric_equilibrium.h>
+#include <fluid_surface/geometry/exact_geometry.h>
 #include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/reference/axisymmetric_equilibrium.h>
 
 #include <algorithm>
 #include <cmath>
@@ -21,75 +21,8 @@ namespace FluidSurface
   {
     constexpr double pi = 3.14159265358979323846;
 
-    /// Gauss–Legendre rule with @p n points on [0, 1] (deal.II's QGauss).
-    void
-    gauss_legendre(const unsigned int n, std::vector<double> &x, std::vector<double> &w)
-    {
-      const dealii::QGauss<1> rule(n);
-      x.resize(n);
-      w.resize(n);
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          x[i] = rule.point(i)[0];
-          w[i] = rule.weight(i);
-        }
-    }
-
-    /// Householder least squares: minimizes |A y − b| for the m×n (m ≥ n) row-major matrix A.
-    std::vector<double>
-    least_squares(std::vector<double> A, std::vector<double> b, const unsigned int m, const unsigned int n)
-    {
-      for (unsigned int k = 0; k < n; ++k)
-        {
-          double norm = 0;
-          for (unsigned int i = k; i < m; ++i)
-            norm += A[i * n + k] * A[i * n + k];
-          norm = std::sqrt(norm);
-          if (norm == 0)
-            continue;
-          const double alpha = (A[k * n + k] > 0 ? -norm : norm);
-          std::vector<double> v(m - k);
-          for (unsigned int i = k; i < m; ++i)
-            v[i - k] = A[i * n + k];
-          v[0] -= alpha;
-          double vv = 0;
-          for (const double vi : v)
-            vv += vi * vi;
-          if (vv == 0)
-            continue;
-          for (unsigned int j = k; j < n; ++j)
-            {
-              double d = 0;
-              for (unsigned int i = k; i < m; ++i)
-                d += v[i - k] * A[i * n + j];
-              d *= 2 / vv;
-              for (unsigned int i = k; i < m; ++i)
-                A[i * n + j] -= d * v[i - k];
-            }
-          double d = 0;
-          for (unsigned int i = k; i < m; ++i)
-            d += v[i - k] * b[i];
-          d *= 2 / vv;
-          for (unsigned int i = k; i < m; ++i)
-            b[i] -= d * v[i - k];
-        }
-      std::vector<double> y(n, 0.);
-      for (int k = n - 1; k >= 0; --k)
-        {
-          double s = b[k];
-          for (unsigned int j = k + 1; j < n; ++j)
-            s -= A[k * n + j] * y[j];
-          y[k] = (A[k * n + k] != 0 ? s / A[k * n + k] : 0.);
-        }
-      return y;
-    }
-
-    /// Reduced volume of a body of area A and volume V.
-    double
-    reduced_volume_of(const double A, const double V)
-    {
-      return V / (4. * pi / 3. * std::pow(A / (4. * pi), 1.5));
-    }
+    using Parameters = AxisymmetricEquilibrium::Parameters;
+    using Branch     = AxisymmetricEquilibrium::Branch;
 
     /**
      * Chebyshev collocation of the half-curve boundary value problem. Unknown vector:
@@ -124,10 +57,16 @@ namespace FluidSurface
       bool   momentum_prescribed = false;
       double omega = 0, L0 = 0;
 
+      /// Number of unknowns without ω: the four fields, S, σ and P.
+      unsigned int
+      size_at_rest() const
+      {
+        return 4 * (N + 1) + 3;
+      }
       unsigned int
       size() const
       {
-        return 4 * (N + 1) + 3 + (momentum_prescribed ? 1 : 0);
+        return size_at_rest() + (momentum_prescribed ? 1 : 0);
       }
       unsigned int
       psi(unsigned int j) const
@@ -184,6 +123,21 @@ namespace FluidSurface
         return 8 * pi / 3 * R2 * R2;
       }
 
+      /// Radius R of the sphere of area A0.
+      double
+      sphere_radius() const
+      {
+        return std::sqrt(A0 / (4 * pi));
+      }
+
+      /// Volume of a shape of area A0 and reduced volume @p v.
+      double
+      volume_at(const double v) const
+      {
+        const double R_area = sphere_radius();
+        return v * 4 * pi / 3 * R_area * R_area * R_area;
+      }
+
       /// (Dv)_j for the block of x starting at @p offset.
       double
       derivative(const std::vector<double> &x, const unsigned int offset, const unsigned int j) const
@@ -194,6 +148,8 @@ namespace FluidSurface
         return d;
       }
 
+      /// The residual at @p x: the collocated shape equations with the pole and equator conditions, then the
+      /// equator angle and the relative area, volume (and angular momentum) defects.
       void
       residual(const std::vector<double> &x, std::vector<double> &R) const
       {
@@ -237,12 +193,21 @@ namespace FluidSurface
           R[w()] = (om * 4 * pi * S * I - L0) / inertia_scale();
       }
 
+      /// The Jacobian of residual() at @p x.
       void
       jacobian(const std::vector<double> &x, dealii::LAPACKFullMatrix<double> &J) const
       {
         const unsigned int n = size();
         J.reinit(n, n);
         J = 0;
+        add_shape_equation_jacobian(x, J);
+        add_constraint_jacobian(x, J);
+      }
+
+      /// The rows of the collocated shape equations (ψ, r, H, η at every node) of the Jacobian.
+      void
+      add_shape_equation_jacobian(const std::vector<double> &x, dealii::LAPACKFullMatrix<double> &J) const
+      {
         const double S = x[this->S()], sg = x[sigma()], Pr = x[P()], om = omega_of(x);
         for (unsigned int j = 0; j <= N; ++j)
           {
@@ -298,6 +263,13 @@ namespace FluidSurface
             else
               J(eta(j), eta(j)) = 1;
           }
+      }
+
+      /// The rows of the equator condition and the area, volume (and angular momentum) constraints.
+      void
+      add_constraint_jacobian(const std::vector<double> &x, dealii::LAPACKFullMatrix<double> &J) const
+      {
+        const double S = x[this->S()], om = omega_of(x);
         J(this->S(), psi(N)) = 1;
         double a = 0, v = 0, I = 0;
         for (unsigned int j = 0; j <= N; ++j)
@@ -321,6 +293,7 @@ namespace FluidSurface
           }
       }
 
+      /// Euclidean norm.
       static double
       norm(const std::vector<double> &v)
       {
@@ -393,26 +366,267 @@ namespace FluidSurface
             x.swap(trial);
             R.swap(R_trial);
             r0 = norm(R);
-
           }
         return false;
       }
     };
 
-    /// Arc length of the quarter ellipse r = a sin θ, z = c cos θ from θ = 0 to @p theta.
-    double
-    ellipse_arc(const double a, const double c, const double theta)
+    /**
+     * Least-squares fit of the multipliers η_0..η_N, σ, P to the H and η equations at the shape (ψ, r, H, S)
+     * held in @p y, with η(0) = η(S) = 0 as heavily weighted rows; writes them into @p y. Solved with the
+     * pseudo-inverse of LAPACK's singular value decomposition.
+     */
+    void
+    fit_multipliers(const Collocation &problem, std::vector<double> &y)
     {
-      static std::vector<double> x, w;
-      if (x.empty())
-        gauss_legendre(40, x, w);
-      double s = 0;
-      for (unsigned int q = 0; q < x.size(); ++q)
+      const unsigned int               N = problem.N, m = 2 * N + 2, n = N + 3;
+      const double                     S = y[problem.S()], Be = problem.Be;
+      dealii::LAPACKFullMatrix<double> A(m, n);
+      dealii::Vector<double>           b(m), fit(n);
+      unsigned int                     row = 0;
+      for (unsigned int j = 1; j <= N; ++j, ++row)
         {
-          const double th = theta * x[q];
-          s += w[q] * std::sqrt(a * a * std::cos(th) * std::cos(th) + c * c * std::sin(th) * std::sin(th));
+          const double ps = y[problem.psi(j)], rj = y[problem.r(j)], Hj = y[problem.H(j)];
+          const double k  = std::sin(ps) / rj;
+          A(row, j)       = -S * Be * k;
+          A(row, N + 2)   = S * Be * 0.5 * rj * std::cos(ps);
+          b[row]          = -problem.derivative(y, problem.H(0), j);
+          ++row;
+          for (unsigned int i = 0; i <= N; ++i)
+            A(row, i) = problem.D[j * (N + 1) + i];
+          A(row, N + 1) = -S;
+          A(row, N + 2) = S * rj * std::sin(ps);
+          b[row]        = S * 0.5 / Be * (Hj * Hj - 2 * Hj * k);
         }
-      return s * theta;
+      A(row, 0) = 10;
+      ++row;
+      A(row, N) = 10;
+      A.compute_inverse_svd();
+      A.vmult(fit, b);
+      for (unsigned int j = 0; j <= N; ++j)
+        y[problem.eta(j)] = fit[j];
+      y[problem.eta(0)]  = 0;
+      y[problem.eta(N)]  = 0;
+      y[problem.sigma()] = fit[N + 1];
+      y[problem.P()]     = fit[N + 2];
+    }
+
+    /// Axis ratio c/a of the spheroid of @p branch with reduced volume @p v (bisection in log(c/a)).
+    double
+    spheroid_axis_ratio(const Branch branch, const double v)
+    {
+      double lo = 0, hi = std::log(50.);
+      for (unsigned int it = 0; it < 64; ++it)
+        {
+          const double mid   = 0.5 * (lo + hi);
+          const double ratio = std::exp(branch == Branch::prolate ? mid : -mid);
+          if (exact_spheroid_measures(1, ratio).reduced_volume > v)
+            lo = mid;
+          else
+            hi = mid;
+        }
+      return std::exp(branch == Branch::prolate ? lo : -lo);
+    }
+
+    /**
+     * Initial guess of the resting shape: the spheroid of @p branch with reduced volume @p v, scaled to the
+     * area A0, sampled at the collocation nodes by arc length, with the multipliers fitted by least squares.
+     */
+    std::vector<double>
+    spheroid_state(const Collocation &problem, const Branch branch, const double v)
+    {
+      const unsigned int  N     = problem.N;
+      const double        ratio = spheroid_axis_ratio(branch, v);
+      const double        scale = std::sqrt(problem.A0 / exact_spheroid_measures(1, ratio).area);
+      const double        a = scale, c = scale * ratio;
+      const double        S = spheroid_meridian_length(a, c, 0.5 * pi);
+      std::vector<double> y(problem.size_at_rest(), 0.);
+      y[problem.S()] = S;
+      for (unsigned int j = 0; j <= N; ++j)
+        {
+          // The polar angle θ of arc length s = S t_j, by Newton's method on the meridian length.
+          const double s     = S * problem.nodes[j];
+          double       theta = 0.5 * pi * problem.nodes[j];
+          for (unsigned int it = 0; it < 50; ++it)
+            {
+              const double g =
+                std::sqrt(a * a * std::cos(theta) * std::cos(theta) + c * c * std::sin(theta) * std::sin(theta));
+              const double d = (spheroid_meridian_length(a, c, theta) - s) / g;
+              theta -= d;
+              if (std::abs(d) < 1e-15)
+                break;
+            }
+          const double sn = std::sin(theta), cs = std::cos(theta);
+          const double g  = std::sqrt(a * a * cs * cs + c * c * sn * sn);
+          y[problem.psi(j)] = std::atan2(c * sn, a * cs);
+          y[problem.r(j)]   = a * sn;
+          y[problem.H(j)]   = a * c / (g * g * g) + c / (a * g);
+        }
+      y[problem.psi(0)] = 0;
+      y[problem.r(0)]   = 0;
+      y[problem.psi(N)] = 0.5 * pi;
+      fit_multipliers(problem, y);
+      return y;
+    }
+
+    /// The sphere of area A0: with σ = P = η = 0 it solves the collocation equations exactly.
+    std::vector<double>
+    sphere_state(const Collocation &problem)
+    {
+      const double        R_area = problem.sphere_radius();
+      std::vector<double> x(problem.size_at_rest(), 0.);
+      for (unsigned int j = 0; j <= problem.N; ++j)
+        {
+          x[problem.psi(j)] = 0.5 * pi * problem.nodes[j];
+          x[problem.r(j)]   = R_area * std::sin(0.5 * pi * problem.nodes[j]);
+          x[problem.H(j)]   = 2 / R_area;
+        }
+      x[problem.S()] = 0.5 * pi * R_area;
+      return x;
+    }
+
+    /// The state @p y belongs to @p branch: its polar half height exceeds (prolate) or falls below (oblate)
+    /// its largest radius.
+    bool
+    on_branch(const Collocation &problem, const Branch branch, const std::vector<double> &y)
+    {
+      double h = 0;
+      for (unsigned int j = 0; j <= problem.N; ++j)
+        h += problem.weights[j] * std::sin(y[problem.psi(j)]);
+      h *= y[problem.S()];
+      double rmax = 0;
+      for (unsigned int j = 0; j <= problem.N; ++j)
+        rmax = std::max(rmax, y[problem.r(j)]);
+      return branch == Branch::prolate ? (h > rmax) : (h < rmax);
+    }
+
+    /// A continuation step is accepted only if Newton converged quickly and the shape moved little, so that
+    /// the path cannot jump to another family of solutions.
+    bool
+    small_change(const Collocation         &problem,
+                 const std::vector<double> &y0,
+                 const std::vector<double> &y1,
+                 const unsigned int         iterations)
+    {
+      double change = 0;
+      for (unsigned int j = 0; j <= problem.N; ++j)
+        change = std::max(change, std::abs(y1[problem.r(j)] - y0[problem.r(j)]));
+      return iterations <= 10 && change <= 0.1 * problem.sphere_radius();
+    }
+
+    /// I_zz = ∫(x² + y²) dA of the state @p y.
+    double
+    inertia_zz_of(const Collocation &problem, const std::vector<double> &y)
+    {
+      double I = 0;
+      for (unsigned int j = 0; j <= problem.N; ++j)
+        I += problem.weights[j] * std::pow(y[problem.r(j)], 3);
+      return 4 * pi * y[problem.S()] * I;
+    }
+
+    /**
+     * The resting shape (ω = 0) of the reduced volume of @p prm: Newton from the spheroid directly, else by
+     * continuation in v from near the sphere (v = 0.97).
+     */
+    std::vector<double>
+    resting_shape(Collocation &problem, const Parameters &prm)
+    {
+      unsigned int iterations     = 0;
+      problem.omega               = 0;
+      problem.momentum_prescribed = false;
+      problem.V0                  = problem.volume_at(prm.reduced_volume);
+      std::vector<double> x       = spheroid_state(problem, prm.branch, prm.reduced_volume);
+      if (problem.newton(x, prm.newton_tolerance, iterations) && on_branch(problem, prm.branch, x))
+        return x;
+
+      double v = std::max(prm.reduced_volume, 0.97), dv = 0.05;
+      problem.V0 = problem.volume_at(v);
+      x          = spheroid_state(problem, prm.branch, v);
+      if (!problem.newton(x, prm.newton_tolerance, iterations) || !on_branch(problem, prm.branch, x))
+        throw std::runtime_error("AxisymmetricEquilibrium: no convergence near the sphere.");
+      while (v > prm.reduced_volume)
+        {
+          const double        v_next = std::max(prm.reduced_volume, v - dv);
+          std::vector<double> y      = x;
+          problem.V0                 = problem.volume_at(v_next);
+          if (problem.newton(y, prm.newton_tolerance, iterations) && on_branch(problem, prm.branch, y) &&
+              small_change(problem, x, y, iterations))
+            {
+              x = y;
+              v = v_next;
+              dv *= 1.5;
+            }
+          else if ((dv *= 0.5) < 1e-5)
+            throw std::runtime_error("AxisymmetricEquilibrium: continuation in the reduced volume "
+                                     "stalled at v = " + std::to_string(v) + ".");
+        }
+      return x;
+    }
+
+    /**
+     * Continuation in ω² (or in L when the angular momentum is prescribed) from the resting state @p x to the
+     * rotation of @p prm; @p x becomes the rotating state (with ω appended when L is prescribed). Returns ω.
+     */
+    double
+    continue_in_rotation(Collocation &problem, const Parameters &prm, std::vector<double> &x)
+    {
+      const bool   by_L   = (prm.prescribed == AxisymmetricEquilibrium::Prescribed::angular_momentum);
+      const double target = by_L ? prm.angular_momentum : prm.angular_velocity * prm.angular_velocity;
+      if (by_L)
+        {
+          problem.momentum_prescribed = true;
+          x.push_back(0.);
+        }
+      unsigned int iterations = 0;
+      double       done = 0, step = target;
+      while (done != target)
+        {
+          const double        next = (std::abs(target - done) <= std::abs(step) ? target : done + step);
+          std::vector<double> y    = x;
+          if (by_L)
+            {
+              problem.L0     = next;
+              y[problem.w()] = next / inertia_zz_of(problem, x);
+            }
+          else
+            problem.omega = std::sqrt(next);
+          // On the branch that starts at rest I_zz grows with ω² (G = F − ½ω²I is minimal there) up to the
+          // fold, where a continuation in ω cannot pass; a decrease means Newton jumped to another branch.
+          if (problem.newton(y, prm.newton_tolerance, iterations) && on_branch(problem, prm.branch, y) &&
+              small_change(problem, x, y, iterations) &&
+              (by_L || inertia_zz_of(problem, y) >= (1 - 1e-12) * inertia_zz_of(problem, x)))
+            {
+              x    = y;
+              done = next;
+              step *= 1.5;
+            }
+          else if (std::abs(step *= 0.5) < 1e-6 * std::max(1., std::abs(target)))
+            throw std::runtime_error("AxisymmetricEquilibrium: continuation in the rotation stalled at " +
+                                     std::string(by_L ? "L = " : "ω² = ") + std::to_string(done) +
+                                     " (the branch of equilibria at fixed ω folds back near there; "
+                                     "prescribing the angular momentum may continue it).");
+        }
+      return by_L ? x[problem.w()] : prm.angular_velocity;
+    }
+
+    /**
+     * Largest residual of the shape equations (the four collocated fields) at the state @p x, rotating with
+     * @p omega, relative to the half length S.
+     */
+    double
+    shape_equation_residual_of(Collocation &problem, const std::vector<double> &x, const double omega,
+                               const double reduced_volume)
+    {
+      std::vector<double> R;
+      problem.omega               = omega;
+      problem.momentum_prescribed = false;
+      problem.V0                  = problem.volume_at(std::min(1., reduced_volume));
+      const std::vector<double> y(x.begin(), x.begin() + problem.size_at_rest());
+      problem.residual(y, R);
+      double residual = 0;
+      for (unsigned int i = 0; i < 4 * (problem.N + 1); ++i)
+        residual = std::max(residual, std::abs(R[i]));
+      return residual / x[problem.S()];
     }
   } // namespace
 
@@ -470,10 +684,10 @@ namespace FluidSurface
     const std::string omega_text = handler.get("angular velocity");
     const std::string L_text     = handler.get("angular momentum");
     p.output_file                = handler.get("output file");
-    p.n_collocation              = handler.get_integer("collocation points");
-    p.max_collocation            = handler.get_integer("maximal collocation points");
-    p.n_output_points            = handler.get_integer("output points");
-    p.tolerance                  = handler.get_double("Newton tolerance");
+    p.collocation_points         = handler.get_integer("collocation points");
+    p.maximal_collocation_points = handler.get_integer("maximal collocation points");
+    p.output_points              = handler.get_integer("output points");
+    p.newton_tolerance           = handler.get_double("Newton tolerance");
     handler.leave_subsection();
 
     const auto blank = [](const std::string &s) { return s.find_first_not_of(" \t") == std::string::npos; };
@@ -489,21 +703,20 @@ namespace FluidSurface
                           "an empty value when 'angular velocity' is given (prescribe ω or L, not both)");
     if (!blank(L_text))
       {
-        p.prescribed = Prescribed::angular_momentum;
-        p.L          = std::stod(L_text);
+        p.prescribed       = Prescribed::angular_momentum;
+        p.angular_momentum = std::stod(L_text);
       }
     else
       {
-        p.prescribed = Prescribed::angular_velocity;
-        p.omega      = blank(omega_text) ? 0. : std::stod(omega_text);
+        p.prescribed       = Prescribed::angular_velocity;
+        p.angular_velocity = blank(omega_text) ? 0. : std::stod(omega_text);
       }
-    const bool rotating = (p.prescribed == Prescribed::angular_momentum ? p.L != 0 : p.omega != 0);
+    const bool rotating = (p.prescribed == Prescribed::angular_momentum ? p.angular_momentum != 0 : p.angular_velocity != 0);
     if (p.reduced_volume >= 1 && rotating)
       throw_invalid_entry("equilibrium/reduced volume", std::to_string(p.reduced_volume),
                           "a value below 1 for a rotating shape (at v = 1 only the sphere is admissible, and a "
                           "rotating sphere is not an equilibrium)");
-    prm    = p;
-    solved = false;
+    prm = p;
   }
 
 
@@ -514,38 +727,15 @@ namespace FluidSurface
 
 
 
-  AxisymmetricEquilibrium::Spheroid
-  AxisymmetricEquilibrium::spheroid(const double a, const double c)
-  {
-    static std::vector<double> x, w;
-    if (x.empty())
-      gauss_legendre(200, x, w);
-    Spheroid result{0, 4 * pi / 3 * a * a * c, 0, 0, 0};
-    for (unsigned int q = 0; q < x.size(); ++q)
-      {
-        // Generating curve r = a sin θ, z = c cos θ, θ ∈ [0, π/2] (twice for the lower half).
-        const double th = 0.5 * pi * x[q], sn = std::sin(th), cs = std::cos(th);
-        const double g  = std::sqrt(a * a * cs * cs + c * c * sn * sn);
-        const double dA = 2 * pi * a * sn * g * 0.5 * pi * w[q] * 2;
-        const double ks = a * c / (g * g * g), kphi = c / (a * g);
-        result.area += dA;
-        result.inertia_zz += a * a * sn * sn * dA;
-        result.willmore += 0.5 * (ks + kphi) * (ks + kphi) * dA;
-      }
-    result.reduced_volume = reduced_volume_of(result.area, result.volume);
-    return result;
-  }
-
-
 
   void
   AxisymmetricEquilibrium::solve()
   {
     // Double N until the scaling identity, which the discretization does not impose, holds to 1e-9.
-    for (unsigned int N = prm.n_collocation;; N *= 2)
+    for (unsigned int N = prm.collocation_points;; N *= 2)
       {
         solve_collocation(N);
-        if (virial_residual() < 1e-9 || 2 * N > prm.max_collocation)
+        if (virial_residual() < 1e-9 || 2 * N > prm.maximal_collocation_points)
           break;
       }
   }
@@ -553,7 +743,7 @@ namespace FluidSurface
 
 
   void
-  AxisymmetricEquilibrium::solve_collocation(const unsigned int N)
+  AxisymmetricEquilibrium::set_collocation_nodes(const unsigned int N)
   {
     nodes.resize(N + 1);
     barycentric_weights.resize(N + 1);
@@ -584,199 +774,30 @@ namespace FluidSurface
             v -= 2 * std::cos(2 * k * theta) / (4. * k * k - 1);
         quadrature_weights[j] = 0.5 * 2 * v / N;
       }
+  }
 
+
+
+  void
+  AxisymmetricEquilibrium::solve_collocation(const unsigned int N)
+  {
+    set_collocation_nodes(N);
     Collocation problem(nodes, barycentric_weights, quadrature_weights);
     problem.Be = prm.bending_number;
     problem.A0 = prm.area;
-    const double R_area = std::sqrt(prm.area / (4 * pi));
-    const auto   volume_at = [&](const double v) { return v * 4 * pi / 3 * R_area * R_area * R_area; };
 
-    const unsigned int  n_rest = 4 * (N + 1) + 3;
-    std::vector<double> x(n_rest, 0.);
-
-    // v = 1: the sphere; with σ = P = η = 0 it solves the collocation equations exactly.
+    std::vector<double> x;
     if (prm.reduced_volume >= 1 - 1e-14)
       {
-        if ((prm.prescribed == Prescribed::angular_momentum ? prm.L : prm.omega) != 0)
+        if ((prm.prescribed == Prescribed::angular_momentum ? prm.angular_momentum : prm.angular_velocity) != 0)
           throw std::runtime_error("AxisymmetricEquilibrium: at reduced volume 1 only the sphere at rest exists.");
-        const double S = 0.5 * pi * R_area;
-        for (unsigned int j = 0; j <= N; ++j)
-          {
-            x[problem.psi(j)] = 0.5 * pi * nodes[j];
-            x[problem.r(j)]   = R_area * std::sin(0.5 * pi * nodes[j]);
-            x[problem.H(j)]   = 2 / R_area;
-          }
-        x[problem.S()] = S;
-        omega          = 0;
+        x     = sphere_state(problem);
+        omega = 0;
       }
     else
       {
-        // Initial guess: the spheroid of the branch with reduced volume v, scaled to area A, with the
-        // multipliers (η, σ, P) fitted to the shape equations by least squares.
-        const auto spheroid_guess = [&](const double v, std::vector<double> &y) {
-          double lo = 0, hi = std::log(50.);
-          for (unsigned int it = 0; it < 64; ++it)
-            {
-              const double mid   = 0.5 * (lo + hi);
-              const double ratio = std::exp(prm.branch == Branch::prolate ? mid : -mid);
-              if (spheroid(1, ratio).reduced_volume > v)
-                lo = mid;
-              else
-                hi = mid;
-            }
-          const double ratio = std::exp(prm.branch == Branch::prolate ? lo : -lo);
-          const double scale = std::sqrt(prm.area / spheroid(1, ratio).area);
-          const double a = scale, c = scale * ratio;
-          const double S = ellipse_arc(a, c, 0.5 * pi);
-          y.assign(n_rest, 0.);
-          y[problem.S()] = S;
-          for (unsigned int j = 0; j <= N; ++j)
-            {
-              const double s     = S * nodes[j];
-              double       theta = 0.5 * pi * nodes[j];
-              for (unsigned int it = 0; it < 50; ++it)
-                {
-                  const double g = std::sqrt(a * a * std::cos(theta) * std::cos(theta) +
-                                             c * c * std::sin(theta) * std::sin(theta));
-                  const double d = (ellipse_arc(a, c, theta) - s) / g;
-                  theta -= d;
-                  if (std::abs(d) < 1e-15)
-                    break;
-                }
-              const double sn = std::sin(theta), cs = std::cos(theta);
-              const double g  = std::sqrt(a * a * cs * cs + c * c * sn * sn);
-              y[problem.psi(j)] = std::atan2(c * sn, a * cs);
-              y[problem.r(j)]   = a * sn;
-              y[problem.H(j)]   = a * c / (g * g * g) + c / (a * g);
-            }
-          y[problem.psi(0)] = 0;
-          y[problem.r(0)]   = 0;
-          y[problem.psi(N)] = 0.5 * pi;
-
-          // Least squares for (η_0..η_N, σ, P) from the H and η equations and η(0) = η(S) = 0.
-          const unsigned int  m = 2 * N + 2, n = N + 3;
-          std::vector<double> A(m * n, 0.), b(m, 0.);
-          const double        Be = prm.bending_number;
-          unsigned int        row = 0;
-          for (unsigned int j = 1; j <= N; ++j, ++row)
-            {
-              const double ps = y[problem.psi(j)], rj = y[problem.r(j)], Hj = y[problem.H(j)];
-              const double k  = std::sin(ps) / rj;
-              A[row * n + j]     = -S * Be * k;
-              A[row * n + N + 2] = S * Be * 0.5 * rj * std::cos(ps);
-              b[row]             = -problem.derivative(y, problem.H(0), j);
-              ++row;
-              for (unsigned int i = 0; i <= N; ++i)
-                A[row * n + i] = problem.D[j * (N + 1) + i];
-              A[row * n + N + 1] = -S;
-              A[row * n + N + 2] = S * rj * std::sin(ps);
-              b[row]             = S * 0.5 / Be * (Hj * Hj - 2 * Hj * k);
-            }
-          A[row * n + 0] = 10;
-          ++row;
-          A[row * n + N] = 10;
-          const std::vector<double> fit = least_squares(A, b, m, n);
-          for (unsigned int j = 0; j <= N; ++j)
-            y[problem.eta(j)] = fit[j];
-          y[problem.eta(0)]   = 0;
-          y[problem.eta(N)]   = 0;
-          y[problem.sigma()]  = fit[N + 1];
-          y[problem.P()]      = fit[N + 2];
-        };
-
-        const auto right_branch = [&](const std::vector<double> &y) {
-          double h = 0;
-          for (unsigned int j = 0; j <= N; ++j)
-            h += quadrature_weights[j] * std::sin(y[problem.psi(j)]);
-          h *= y[problem.S()];
-          double       rmax = 0;
-          for (unsigned int j = 0; j <= N; ++j)
-            rmax = std::max(rmax, y[problem.r(j)]);
-          return prm.branch == Branch::prolate ? (h > rmax) : (h < rmax);
-        };
-
-        // A continuation step is accepted only if Newton converged quickly and the shape moved little, so that
-        // the path cannot jump to another family of solutions.
-        const auto small_change = [&](const std::vector<double> &y0, const std::vector<double> &y1,
-                                      const unsigned int iterations) {
-          double change = 0;
-          for (unsigned int j = 0; j <= N; ++j)
-            change = std::max(change, std::abs(y1[problem.r(j)] - y0[problem.r(j)]));
-          return iterations <= 10 && change <= 0.1 * R_area;
-        };
-        const auto inertia_of = [&](const std::vector<double> &y) {
-          double I = 0;
-          for (unsigned int j = 0; j <= N; ++j)
-            I += quadrature_weights[j] * std::pow(y[problem.r(j)], 3);
-          return 4 * pi * y[problem.S()] * I;
-        };
-
-        unsigned int iterations = 0;
-        // The resting shape: directly from the spheroid, else by continuation in v from near the sphere.
-        problem.omega               = 0;
-        problem.momentum_prescribed = false;
-        problem.V0                  = volume_at(prm.reduced_volume);
-        spheroid_guess(prm.reduced_volume, x);
-        if (!problem.newton(x, prm.tolerance, iterations) || !right_branch(x))
-          {
-            double v = std::max(prm.reduced_volume, 0.97), dv = 0.05;
-            problem.V0 = volume_at(v);
-            spheroid_guess(v, x);
-            if (!problem.newton(x, prm.tolerance, iterations) || !right_branch(x))
-              throw std::runtime_error("AxisymmetricEquilibrium: no convergence near the sphere.");
-            while (v > prm.reduced_volume)
-              {
-                const double        v_next = std::max(prm.reduced_volume, v - dv);
-                std::vector<double> y      = x;
-                problem.V0                 = volume_at(v_next);
-                if (problem.newton(y, prm.tolerance, iterations) && right_branch(y) && small_change(x, y, iterations))
-                  {
-                    x = y;
-                    v = v_next;
-                    dv *= 1.5;
-                  }
-                else if ((dv *= 0.5) < 1e-5)
-                  throw std::runtime_error("AxisymmetricEquilibrium: continuation in the reduced volume "
-                                           "stalled at v = " + std::to_string(v) + ".");
-              }
-          }
-
-        // Rotation: continuation in ω² (or in L) from rest.
-        const bool   by_L   = (prm.prescribed == Prescribed::angular_momentum);
-        const double target = by_L ? prm.L : prm.omega * prm.omega;
-        if (by_L)
-          {
-            problem.momentum_prescribed = true;
-            x.push_back(0.);
-          }
-        double done = 0, step = target;
-        while (done != target)
-          {
-            const double        next = (std::abs(target - done) <= std::abs(step) ? target : done + step);
-            std::vector<double> y    = x;
-            if (by_L)
-              {
-                problem.L0     = next;
-                y[problem.w()] = next / inertia_of(x);
-              }
-            else
-              problem.omega = std::sqrt(next);
-            // On the branch that starts at rest I_zz grows with ω² (G = F − ½ω²I is minimal there) up to the
-            // fold, where a continuation in ω cannot pass; a decrease means Newton jumped to another branch.
-            if (problem.newton(y, prm.tolerance, iterations) && right_branch(y) && small_change(x, y, iterations) &&
-                (by_L || inertia_of(y) >= (1 - 1e-12) * inertia_of(x)))
-              {
-                x    = y;
-                done = next;
-                step *= 1.5;
-              }
-            else if (std::abs(step *= 0.5) < 1e-6 * std::max(1., std::abs(target)))
-              throw std::runtime_error("AxisymmetricEquilibrium: continuation in the rotation stalled at " +
-                                       std::string(by_L ? "L = " : "ω² = ") + std::to_string(done) +
-                                       " (the branch of equilibria at fixed ω folds back near there; "
-                                       "prescribing the angular momentum may continue it).");
-          }
-        omega = by_L ? x[problem.w()] : (prm.omega);
+        x     = resting_shape(problem, prm);
+        omega = continue_in_rotation(problem, prm, x);
       }
 
     psi.assign(x.begin() + problem.psi(0), x.begin() + problem.psi(0) + N + 1);
@@ -789,19 +810,7 @@ namespace FluidSurface
     half_length = x[problem.S()];
     sigma       = x[problem.sigma()];
     pressure    = x[problem.P()];
-
-    {
-      std::vector<double> R;
-      problem.omega               = omega;
-      problem.momentum_prescribed = false;
-      problem.V0                  = volume_at(std::min(1., prm.reduced_volume));
-      std::vector<double> y(x.begin(), x.begin() + n_rest);
-      problem.residual(y, R);
-      residual_value = 0;
-      for (unsigned int i = 0; i < 4 * (N + 1); ++i)
-        residual_value = std::max(residual_value, std::abs(R[i]));
-      residual_value /= half_length;
-    }
+    residual_value = shape_equation_residual_of(problem, x, omega, prm.reduced_volume);
     postprocess();
   }
 
@@ -835,7 +844,6 @@ namespace FluidSurface
         inertia_value += 4 * pi * w * r[j] * r[j] * r[j];
         bending_value += 0.5 / prm.bending_number * 4 * pi * w * curvature[j] * curvature[j] * r[j];
       }
-    solved = true;
   }
 
 
@@ -956,7 +964,7 @@ namespace FluidSurface
     if (!out)
       throw std::runtime_error("AxisymmetricEquilibrium: cannot write '" + file + "'.");
     out << "s,r,z,psi,H\n" << std::setprecision(14);
-    const unsigned int n = std::max(2u, prm.n_output_points);
+    const unsigned int n = std::max(2u, prm.output_points);
     for (unsigned int k = 0; k < n; ++k)
       {
         const double              s = 2 * half_length * k / (n - 1.);

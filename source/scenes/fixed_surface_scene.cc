@@ -2,6 +2,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <fluid_surface/io/output_writer.h>
+#include <fluid_surface/postprocess/speed_postprocessor.h>
 #include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/scenes/fixed_surface_scene.h>
 

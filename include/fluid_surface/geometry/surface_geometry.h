@@ -192,6 +192,24 @@ namespace FluidSurface
     void
     check_closed_and_outward() const;
 
+    /// Assembles the mass matrix of [Q_k]³ and the right-hand sides −(∇_S X, ∇_S η) of κ and (ν_h, η) of ñ.
+    void
+    assemble_curvature_system(dealii::TrilinosWrappers::SparseMatrix &mass,
+                              VectorType                             &rhs_curvature,
+                              VectorType                             &rhs_normal) const;
+
+    /// Normalizes ñ node by node.
+    void
+    normalize_normal_field();
+
+    /// Nodal H = κ·ñ, repeated in the three components of each node.
+    void
+    update_nodal_mean_curvature();
+
+    /// Willmore energy ½∫|κ|² of the current κ.
+    double
+    willmore_energy() const;
+
     MPI_Comm communicator;
 
     Shape                  shape = Shape::ellipsoid;

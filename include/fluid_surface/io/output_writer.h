@@ -3,7 +3,6 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/numerics/data_out.h>
-#include <deal.II/numerics/data_postprocessor.h>
 
 #include <fluid_surface/geometry/surface_geometry.h>
 
@@ -15,16 +14,6 @@
 namespace FluidSurface
 {
   class CheckpointData;
-
-  /// The speed |u| from the first three components of a field, for the VTU files.
-  class SpeedPostprocessor : public dealii::DataPostprocessorScalar<3>
-  {
-  public:
-    SpeedPostprocessor();
-    void
-    evaluate_vector_field(const dealii::DataPostprocessorInputs::Vector<3> &inputs,
-                          std::vector<dealii::Vector<double>>              &computed) const override;
-  };
 
   /**
    * Files of a run in the output directory: `solution-NNNNN.vtu` with curved
@@ -65,37 +54,18 @@ namespace FluidSurface
           const double                                       time,
           const std::function<void(dealii::DataOut<2, 3> &)> &add_fields = {});
 
-    /// Every how many steps a report goes to the screen.
+    /// Every how many steps a report goes to the screen (`screen interval`).
     unsigned int
     screen_interval() const
     {
-      return screen_every;
+      return parameters.screen_interval;
     }
 
-    /// Whether the screen shows timings.
+    /// Whether the screen shows timings (`report wall time`).
     bool
     report_wall_time() const
     {
-      return show_wall_time;
-    }
-
-    /// Number of VTU files written so far (the NNNNN of the next one).
-    unsigned int
-    n_written() const
-    {
-      return times_and_names.size();
-    }
-
-    /// Restores the pvd record after a restart.
-    void
-    set_record(const std::vector<std::pair<double, std::string>> &record)
-    {
-      times_and_names = record;
-    }
-    const std::vector<std::pair<double, std::string>> &
-    record() const
-    {
-      return times_and_names;
+      return parameters.report_wall_time;
     }
 
     /// Writes the output counters (the pvd record and the time of the last VTU file) into a checkpoint.
@@ -106,13 +76,21 @@ namespace FluidSurface
     load(const CheckpointData &data, const MPI_Comm communicator);
 
   private:
-    std::string  output_directory = "results";
-    double       output_interval  = 0;
-    unsigned int subdivisions     = 2;
-    bool         overwrite        = false;
-    bool         write_vtu        = true;
-    unsigned int screen_every     = 10;
-    bool         show_wall_time   = true;
+    /// Rewrites solution.pvd from the record of the VTU files (on the calling rank).
+    void
+    write_pvd_file() const;
+
+    /// The entries of `subsection output`, named as there.
+    struct Parameters
+    {
+      std::string  output_directory = "results";
+      double       output_interval  = 0;
+      bool         write_vtu        = true;
+      unsigned int subdivisions     = 2;
+      unsigned int screen_interval  = 10;
+      bool         report_wall_time = true;
+      bool         overwrite        = false;
+    } parameters;
 
     double                                      last_output_time = -1e300;
     std::vector<std::pair<double, std::string>> times_and_names;

@@ -34,13 +34,6 @@ namespace FluidSurface
     void
     end_row();
 
-    /// The column names, in order (empty before the first row).
-    const std::vector<std::string> &
-    column_names() const
-    {
-      return columns;
-    }
-
     /// Writes the column names and the file length (bytes of the complete rows) into a checkpoint; fsyncs the file.
     void
     save(CheckpointData &data) const;

@@ -9,6 +9,7 @@
 #include <fluid_surface/io/statistics_file.h>
 #include <fluid_surface/geometry/surface_geometry.h>
 
+#include <array>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -125,7 +126,8 @@ namespace FluidSurface
     void
     record(const Values &values, const double time, const double tau);
 
-    /// Adds the columns of design §4 for @p values to the current statistics row.
+    /// Adds the diagnostics' columns of the `statistics` file (listed in the README, "Scenes and experiments")
+    /// for @p values to the current statistics row.
     void
     add_to_statistics(const Values &values, StatisticsFile &statistics) const;
 
@@ -160,8 +162,8 @@ namespace FluidSurface
     load(const CheckpointData &data);
 
   private:
-    dealii::Tensor<1, 3> axis;
-    double               window_begin = 5, window_end = 10;
+    dealii::Tensor<1, 3>  axis;                                ///< `axis` e, normalized
+    std::array<double, 2> angular_velocity_window = {{5, 10}}; ///< `angular velocity window` [t₀, t₁]
 
     bool   have_initial = false;
     Values initial;
@@ -170,8 +172,8 @@ namespace FluidSurface
     double crossing_1e2 = std::numeric_limits<double>::quiet_NaN();
     double omega_integral = 0, omega_time = 0;
 
-    std::string  reference_branch = "none"; ///< `reference equilibrium`
-    unsigned int n_section_angles = 256;    ///< n of section_polar_radius
+    std::string  reference_equilibrium = "none"; ///< `reference equilibrium`: none, prolate or oblate
+    unsigned int section_angles        = 256;    ///< `section angles`: n of section_polar_radius
     std::unique_ptr<AxisymmetricEquilibrium> reference_shape;
     std::vector<double> reference_meridian; ///< r_O(φ_j) of reference_shape's meridian section
     double       min_l2_distance = std::numeric_limits<double>::quiet_NaN(), min_l2_time = 0;

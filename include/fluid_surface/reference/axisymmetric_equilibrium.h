@@ -11,7 +11,8 @@
 namespace FluidSurface
 {
   /**
-   * Rigidly rotating, up–down symmetric axisymmetric equilibrium of a fluid deformable surface (design §5).
+   * Rigidly rotating, up–down symmetric axisymmetric equilibrium of a fluid deformable surface (README,
+   * "Rotating equilibrium shapes"; method and convergence in benchmarks/equilibrium/README.md).
    *
    * The surface is a surface of revolution about the z axis, rotating with u = ω e_z × X. It is a critical
    * point of F_bend − ½ω² I_zz at fixed area A and enclosed volume V (given ω), or equivalently of
@@ -28,7 +29,8 @@ namespace FluidSurface
    * on the half curve s ∈ [0, S] from the north pole to the equator, with pole conditions ψ = r = η = 0
    * (η(0) = 0 is the vanishing Hamiltonian, i.e. the free length) and equator conditions ψ = π/2, η = 0
    * (mirror symmetry), closed by the area and volume constraints (and ω I_zz = L when L is given).
-   * Here H = ψ' + sin ψ / r is positive on a sphere; the public accessors use the design's sign.
+   * Here H = ψ' + sin ψ / r is positive on a sphere; the public accessors use the sign of the README's
+   * "Geometry" section (H = −2/R on a sphere with the outward normal).
    * The system is discretized by Chebyshev collocation in s/S (spectral accuracy) and solved by damped
    * Newton, starting from a spheroid of the same A and V, with continuation in the reduced volume when
    * needed and continuation in ω² (or L) from the resting shape.
@@ -53,32 +55,22 @@ namespace FluidSurface
     /// The inputs of one equilibrium computation (the entries of `subsection equilibrium`).
     struct Parameters
     {
-      double      area            = 12.566370614359172; ///< A, the surface area (4π: unit sphere area)
-      double      reduced_volume  = 0.75;               ///< v = V / ((4π/3)(A/(4π))^{3/2}), 0 < v ≤ 1
-      Branch      branch          = Branch::prolate;
-      double      bending_number  = 1.0;                ///< Be; F_bend = (1/(2Be))∫H²
-      Prescribed  prescribed      = Prescribed::angular_velocity;
-      double      omega           = 0.0;                ///< ω, used when prescribed = angular_velocity
-      double      L               = 0.0;                ///< L = ω I_zz, used when prescribed = angular_momentum
-      std::string output_file     = "equilibrium.csv";  ///< CSV of the generating curve
-      unsigned int n_collocation  = 48;                 ///< N: Chebyshev points 0..N on the half curve
-      unsigned int max_collocation = 512;                ///< N is doubled up to this while under-resolved
-      unsigned int n_output_points = 401;               ///< rows of the CSV (equispaced in s)
-      double      tolerance       = 1e-12;              ///< Newton: relative size of the last update
+      double       area                       = 12.566370614359172; ///< A (4π: the unit sphere's area)
+      double       reduced_volume             = 0.75;  ///< v = V / ((4π/3)(A/(4π))^{3/2}), 0 < v ≤ 1
+      Branch       branch                     = Branch::prolate;
+      double       bending_number             = 1.0;   ///< `Be`; F_bend = (1/(2Be))∫H²
+      Prescribed   prescribed                 = Prescribed::angular_velocity; ///< which entry was given
+      double       angular_velocity           = 0.0;   ///< ω, used when prescribed = angular_velocity
+      double       angular_momentum           = 0.0;   ///< L = ω I_zz, used when prescribed = angular_momentum
+      std::string  output_file                = "equilibrium.csv"; ///< CSV of the generating curve
+      unsigned int collocation_points         = 48;    ///< N: Chebyshev points 0..N on the half curve
+      unsigned int maximal_collocation_points = 512;   ///< N is doubled up to this while under-resolved
+      unsigned int output_points              = 401;   ///< rows of the CSV (equispaced in s)
+      double       newton_tolerance           = 1e-12; ///< Newton: relative size of the last update
     };
 
-    /// Geometry of the spheroid with equatorial semi-axis @p a and polar semi-axis @p c (by quadrature).
-    struct Spheroid
-    {
-      double area;           ///< A
-      double volume;         ///< V = (4π/3) a² c
-      double reduced_volume; ///< v = V / ((4π/3)(A/(4π))^{3/2})
-      double inertia_zz;     ///< ∫(x² + y²) dA
-      double willmore;       ///< ½∫H²
-    };
-
-    /// Declares `subsection equilibrium` (area, reduced volume, branch, Be, prescribe, angular velocity,
-    /// angular momentum, output file, collocation points, maximal collocation points, output points, Newton
+    /// Declares `subsection equilibrium` (area, reduced volume, branch, Be, angular velocity, angular
+    /// momentum, output file, collocation points, maximal collocation points, output points, Newton
     /// tolerance).
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -131,15 +123,15 @@ namespace FluidSurface
     kinetic_energy() const;
 
     /**
-     * The constant p0 of the surface pressure p = p0 + ½ω²r² in the momentum equation of design §1
-     * (−∇_S p − pHν − γν + b). It is minus the Lagrange multiplier σ of the area in
-     * G = F_bend − ½ω² I_zz + σA − PV, i.e. p0 = −(surface tension).
+     * The constant p0 of the surface pressure p = p0 + ½ω²r² in the momentum equation (doc/scheme.md,
+     * "Unknowns and one step"; strong form −∇_S p − pHν − γν + b). It is minus the Lagrange multiplier σ of
+     * the area in G = F_bend − ½ω² I_zz + σA − PV, i.e. p0 = −(surface tension).
      */
     double
     p0() const;
 
     /**
-     * The volume multiplier γ of the momentum equation of design §1 (force −γν, ν outward); it is minus
+     * The volume multiplier γ of the momentum equation of doc/scheme.md (force −γν, ν outward); it is minus
      * the multiplier P of the volume in G = F_bend − ½ω² I_zz + σA − PV, i.e. γ = p_outside − p_inside.
      * At rest on a sphere of radius R with b = 0: γ = 2 p0 / R. The scaling (virial) identity reads
      * 3Vγ = 2 p0 A + 2ω² I_zz = 2∫p − (D_t u, X).
@@ -201,12 +193,12 @@ namespace FluidSurface
 
     /**
      * The generating curve at arc length @p s ∈ [0, 2S] from the north pole: {r, z, ψ, H}, H = k_s + k_φ in
-     * the sign convention of design §1 (H = −2/R on a sphere).
+     * the sign convention of the README's "Geometry" section (H = −2/R on a sphere).
      */
     std::vector<double>
     curve_point(const double s) const;
 
-    /// Writes the generating curve pole to pole: header `s,r,z,psi,H`, then n_output_points rows.
+    /// Writes the generating curve pole to pole: header `s,r,z,psi,H`, then `output points` rows.
     void
     write_curve_csv(const std::string &file) const;
 
@@ -214,11 +206,7 @@ namespace FluidSurface
     void
     print(std::ostream &out) const;
 
-    /// Area, volume, reduced volume, I_zz and ½∫H² of the spheroid with semi-axes (a, a, c).
-    static Spheroid
-    spheroid(const double a, const double c);
-
-    /// Number N of collocation intervals used (prm.n_collocation, doubled while under-resolved).
+    /// Number N of collocation intervals used (`collocation points`, doubled while under-resolved).
     unsigned int
     n_collocation_used() const
     {
@@ -230,6 +218,11 @@ namespace FluidSurface
     void
     solve_collocation(const unsigned int N);
 
+    /// Chebyshev–Lobatto nodes t_j = (1 − cos(πj/N))/2, their barycentric weights and the Clenshaw–Curtis
+    /// weights on [0, 1].
+    void
+    set_collocation_nodes(const unsigned int N);
+
     /// Values of the half curve at t = s/S ∈ [0, 1] (t = 0 north pole, t = 1 equator): r, z, ψ, H (ψ' + sinψ/r).
     void
     evaluate_half(const double t, double values[4]) const;
@@ -239,8 +232,6 @@ namespace FluidSurface
     postprocess();
 
     Parameters prm;
-
-    bool solved = false;
 
     /// Collocation nodes t_j = s_j / S ∈ [0, 1], barycentric and Clenshaw–Curtis weights.
     std::vector<double> nodes, barycentric_weights, quadrature_weights;
