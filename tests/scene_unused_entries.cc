@@ -10,30 +10,11 @@
 
 #include <fstream>
 #include <iostream>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace FluidSurface;
-
-namespace
-{
-  void
-  try_file(const std::string &name, const std::string &content)
-  {
-    std::ofstream(name) << content;
-    dealii::ParameterHandler prm;
-    Simulation::declare_parameters(prm);
-    try
-      {
-        parse_parameter_file(prm, name);
-        Simulation simulation(MPI_COMM_WORLD);
-        simulation.parse_parameters(prm);
-        std::cout << name << ": accepted" << std::endl;
-      }
-    catch (const InputError &error)
-      {
-        std::cout << error.what() << std::endl;
-      }
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -42,14 +23,32 @@ main(int argc, char **argv)
   const std::string full  = "subsection model\n  set scene = full\nend\n";
   const std::string fixed = "subsection model\n  set scene = fixed surface\nend\n"
                             "subsection geometry\n  set shape = sphere\nend\n";
-  try_file("full_fixed_solver.prm", full + "subsection fixed surface solver\n  set time scheme = BDF1\nend\n");
-  try_file("full_fixed_problem.prm", full + "# a comment\nsubsection fixed surface\n  set problem = \\\n  killing\nend\n");
-  try_file("full_used.prm", full + "subsection flow\n  set Re = 2\n  set conserve momenta = true\nend\n"
-                                   "subsection bending\n  set Be = 2\nend\n");
-  try_file("fixed_bending.prm", fixed + "subsection bending\n  set Be = 2\nend\n");
-  try_file("fixed_conserve_momenta.prm", fixed + "subsection flow\n  set Re = 2\n  set conserve momenta = true\nend\n");
-  try_file("fixed_maximum_step.prm", fixed + "subsection time stepping\n  set maximum time step = 0.1\nend\n");
-  try_file("fixed_used.prm", fixed + "subsection flow\n  set Re = 2\nend\n"
-                                     "subsection fixed surface solver\n  set time scheme = BDF1\nend\n"
-                                     "subsection time stepping\n  set time step = 0.1\nend\n");
+  const std::vector<std::pair<std::string, std::string>> files = {
+    {"full_fixed_solver.prm", full + "subsection fixed surface solver\n  set time scheme = BDF1\nend\n"},
+    {"full_fixed_problem.prm", full + "# a comment\nsubsection fixed surface\n  set problem = \\\n  killing\nend\n"},
+    {"full_used.prm",
+     full + "subsection flow\n  set Re = 2\n  set conserve momenta = true\nend\nsubsection bending\n  set Be = 2\nend\n"},
+    {"fixed_bending.prm", fixed + "subsection bending\n  set Be = 2\nend\n"},
+    {"fixed_conserve_momenta.prm", fixed + "subsection flow\n  set Re = 2\n  set conserve momenta = true\nend\n"},
+    {"fixed_maximum_step.prm", fixed + "subsection time stepping\n  set maximum time step = 0.1\nend\n"},
+    {"fixed_used.prm",
+     fixed + "subsection flow\n  set Re = 2\nend\nsubsection fixed surface solver\n  set time scheme = BDF1\nend\n"
+             "subsection time stepping\n  set time step = 0.1\nend\n"}};
+  for (const auto &[name, content] : files)
+    {
+      std::ofstream(name) << content;
+      dealii::ParameterHandler prm;
+      Simulation::declare_parameters(prm);
+      std::string outcome = name + ": accepted";
+      try
+        {
+          parse_parameter_file(prm, name);
+          Simulation(MPI_COMM_WORLD).parse_parameters(prm);
+        }
+      catch (const InputError &error)
+        {
+          outcome = error.what();
+        }
+      std::cout << outcome << std::endl;
+    }
 }

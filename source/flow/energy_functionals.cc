@@ -9,6 +9,34 @@ namespace FluidSurface
   {
     using namespace dealii;
 
+    namespace
+    {
+      /**
+       * Σ over the locally owned cells and quadrature points, in this order, of add(fe_values, q, sum), which
+       * adds the integrand times JxW to its running sum (one sum, so that the order of the additions is the
+       * same for every functional); then the sum over the ranks.
+       */
+      template <typename AddIntegrand>
+      double
+      integrate(const Mapping<2, 3>    &mapping,
+                const DoFHandler<2, 3> &dofs,
+                const Quadrature<2>    &quadrature,
+                const UpdateFlags       flags,
+                const MPI_Comm          communicator,
+                const AddIntegrand     &add)
+      {
+        FEValues<2, 3> fe_values(mapping, dofs.get_fe(), quadrature, flags | update_JxW_values);
+        double         sum = 0;
+        for (const auto &cell : dofs.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              fe_values.reinit(cell);
+              add(fe_values, sum);
+            }
+        return Utilities::MPI::sum(sum, communicator);
+      }
+    } // namespace
+
     double
     kinetic_energy(const Mapping<2, 3>    &mapping,
                    const DoFHandler<2, 3> &dofs,
@@ -16,19 +44,12 @@ namespace FluidSurface
                    const Quadrature<2>    &quadrature,
                    const MPI_Comm          communicator)
     {
-      FEValues<2, 3>                   fe_values(mapping, dofs.get_fe(), quadrature, update_values | update_JxW_values);
-      const FEValuesExtractors::Vector velocity(0);
-      std::vector<Tensor<1, 3>>        u(quadrature.size());
-      double                           energy = 0;
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            fe_values.reinit(cell);
-            fe_values[velocity].get_function_values(state, u);
-            for (unsigned int q = 0; q < quadrature.size(); ++q)
-              energy += kinetic_energy_density(u[q]) * fe_values.JxW(q);
-          }
-      return Utilities::MPI::sum(energy, communicator);
+      std::vector<Tensor<1, 3>> u(quadrature.size());
+      return integrate(mapping, dofs, quadrature, update_values, communicator, [&](const FEValues<2, 3> &fe_values, double &sum) {
+        fe_values[FEValuesExtractors::Vector(0)].get_function_values(state, u);
+        for (unsigned int q = 0; q < u.size(); ++q)
+          sum += kinetic_energy_density(u[q]) * fe_values.JxW(q);
+      });
     }
 
     double
@@ -39,25 +60,18 @@ namespace FluidSurface
                      const double            Re,
                      const MPI_Comm          communicator)
     {
-      FEValues<2, 3>                   fe_values(mapping,
-                                 dofs.get_fe(),
-                                 quadrature,
-                                 update_gradients | update_normal_vectors | update_JxW_values);
-      const FEValuesExtractors::Vector velocity(0);
-      std::vector<Tensor<2, 3>>        gradient(quadrature.size());
-      double                           rate = 0;
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            fe_values.reinit(cell);
-            fe_values[velocity].get_function_gradients(state, gradient);
-            for (unsigned int q = 0; q < quadrature.size(); ++q)
-              {
-                const Tensor<2, 3> sigma = SurfaceOperators::strain_rate(gradient[q], fe_values.normal_vector(q));
-                rate += scalar_product(sigma, sigma) * fe_values.JxW(q);
-              }
-          }
-      return 2.0 / Re * Utilities::MPI::sum(rate, communicator);
+      std::vector<Tensor<2, 3>> gradient(quadrature.size());
+      const double              sum = integrate(
+        mapping, dofs, quadrature, update_gradients | update_normal_vectors, communicator,
+        [&](const FEValues<2, 3> &fe_values, double &sum) {
+          fe_values[FEValuesExtractors::Vector(0)].get_function_gradients(state, gradient);
+          for (unsigned int q = 0; q < gradient.size(); ++q)
+            {
+              const Tensor<2, 3> sigma = SurfaceOperators::strain_rate(gradient[q], fe_values.normal_vector(q));
+              sum += scalar_product(sigma, sigma) * fe_values.JxW(q);
+            }
+        });
+      return 2.0 / Re * sum;
     }
   } // namespace EnergyFunctionals
 } // namespace FluidSurface

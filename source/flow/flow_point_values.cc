@@ -16,7 +16,7 @@ namespace FluidSurface
   void
   FlowPointValues::reinit(const FEValues<2, 3> &fe_values, const unsigned int q)
   {
-    AssertDimension(velocity.size(), fe_values.dofs_per_cell);
+    AssertDimension(velocity.size(), fe_values.get_fe().n_dofs_per_cell());
     Assert(fe_values.get_fe().n_components() >= 4, ExcMessage("velocity in components 0–2, pressure in 3"));
     const FEValuesExtractors::Vector velocity_part(0);
     const FEValuesExtractors::Scalar pressure_part(3);

@@ -18,8 +18,10 @@ namespace FluidSurface
   class BendingForce
   {
   public:
+    /// Declares `subsection bending`.
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+    /// Reads `subsection bending`.
     void
     parse_parameters(dealii::ParameterHandler &prm);
 

@@ -23,8 +23,10 @@ namespace FluidSurface
   class MeshRedistribution
   {
   public:
+    /// Declares `subsection mesh redistribution`.
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+    /// Reads `subsection mesh redistribution`.
     void
     parse_parameters(dealii::ParameterHandler &prm);
 

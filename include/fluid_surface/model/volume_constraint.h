@@ -20,6 +20,7 @@ namespace FluidSurface
   class VolumeConstraint
   {
   public:
+    /// Declares `subsection volume constraint`.
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     /// Reads `subsection volume constraint`; @p maximum_time_step is τ_max of the run (a lower bound of τ_c).
