@@ -21,11 +21,8 @@ namespace FluidSurface
                                  StatisticsFile           &statistics,
                                  const ConditionalOStream &pcout,
                                  const Timer              &wall_timer)
-    : communicator(communicator)
-    , geometry(geometry)
-    , output(output)
-    , statistics(statistics)
-    , pcout(pcout)
+    : Scene(geometry, output, statistics, pcout)
+    , communicator(communicator)
     , wall_timer(wall_timer)
     , computing_timer(this->pcout, TimerOutput::never, TimerOutput::wall_times)
     , model(geometry)

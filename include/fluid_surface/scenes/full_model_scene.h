@@ -1,14 +1,10 @@
 #ifndef fluid_surface_scenes_full_model_scene_h
 #define fluid_surface_scenes_full_model_scene_h
 
-#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
-#include <fluid_surface/geometry/surface_geometry.h>
 #include <fluid_surface/io/checkpoint.h>
-#include <fluid_surface/io/output_writer.h>
-#include <fluid_surface/io/statistics_file.h>
 #include <fluid_surface/model/fluid_deformable_surface.h>
 #include <fluid_surface/postprocess/diagnostics.h>
 #include <fluid_surface/scenes/scene.h>
@@ -29,7 +25,7 @@ namespace FluidSurface
   class FullModelScene : public Scene
   {
   public:
-    /// The scene works on the surface, files, screen and wall clock of the Simulation.
+    /// See Scene; @p wall_timer is the Simulation's clock (the wall time of the run).
     FullModelScene(const MPI_Comm                    communicator,
                    SurfaceGeometry                  &geometry,
                    OutputWriter                     &output,
@@ -87,12 +83,8 @@ namespace FluidSurface
       return wall_time_before_restart + wall_timer.wall_time();
     }
 
-    MPI_Comm                          communicator;
-    SurfaceGeometry                  &geometry;
-    OutputWriter                     &output;
-    StatisticsFile                   &statistics;
-    dealii::ConditionalOStream        pcout; ///< the Simulation's screen (rank 0)
-    const dealii::Timer              &wall_timer;
+    MPI_Comm             communicator;
+    const dealii::Timer &wall_timer;
     /// Wall time per section: assembly, factorization, linear solve, curvature and energy, diagnostics,
     /// output. Printed at the end when `output/report wall time` is on; always written to the file `timing`.
     dealii::TimerOutput computing_timer;
