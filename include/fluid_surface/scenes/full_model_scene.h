@@ -11,6 +11,8 @@
 #include <fluid_surface/time_stepping/energy_step_controller.h>
 #include <fluid_surface/time_stepping/time_stepper.h>
 
+#include <string>
+
 namespace FluidSurface
 {
   /**
@@ -46,12 +48,28 @@ namespace FluidSurface
     run() override;
 
   private:
+    /// ½∫H² and the total energy F of a state.
+    struct Energies
+    {
+      double willmore = 0;
+      double total    = 0;
+    };
+
     /// Sets up the model at t = 0 and records and writes the initial state.
     void
     set_up_initial_state();
     /// Restores every component from the checkpoint and checks that it reproduces its total energy.
     void
     resume_from_checkpoint();
+    /// The energies of the solved step that is not yet accepted (the curvature of its surface is computed here).
+    Energies
+    candidate_energies();
+    /// Undoes the last step and shrinks τ for its retry (std::runtime_error with @p reason below τ_min).
+    void
+    retry_step(const std::string &reason);
+    /// Makes the solved step of size @p tau the current state; τ for the next step as the @p energy check says.
+    void
+    accept_step(const double tau, const Energies &candidate, const EnergyStepController::Decision &energy);
     /// One statistics row and screen report of the accepted state.
     void
     record_step(const double tau, const FluidDeformableSurface::StepResult &step);
