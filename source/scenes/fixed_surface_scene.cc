@@ -326,10 +326,7 @@ namespace FluidSurface
                                        OutputWriter             &output,
                                        StatisticsFile           &statistics,
                                        const ConditionalOStream &pcout)
-    : geometry(geometry)
-    , output(output)
-    , statistics(statistics)
-    , pcout(pcout)
+    : Scene(geometry, output, statistics, pcout)
   {}
 
   void

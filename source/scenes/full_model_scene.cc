@@ -21,11 +21,8 @@ namespace FluidSurface
                                  StatisticsFile           &statistics,
                                  const ConditionalOStream &pcout,
                                  const Timer              &wall_timer)
-    : communicator(communicator)
-    , geometry(geometry)
-    , output(output)
-    , statistics(statistics)
-    , pcout(pcout)
+    : Scene(geometry, output, statistics, pcout)
+    , communicator(communicator)
     , wall_timer(wall_timer)
     , computing_timer(this->pcout, TimerOutput::never, TimerOutput::wall_times)
     , model(geometry)
@@ -53,7 +50,7 @@ namespace FluidSurface
   FullModelScene::run()
   {
     if (!resuming)
-      checkpoint.clear();
+      checkpoint.clear(); // those of an earlier run in the same directory
     model.set_timer(computing_timer);
     // The timing is written however the run ends (a failed run's timing shows where it spent its time),
     // and the factorization kept across steps is freed.
@@ -86,33 +83,17 @@ namespace FluidSurface
         const FluidDeformableSurface::StepResult step = model.advance(tau);
         if (!step.solved)
           {
-            model.restore_last_state();
-            time.reject(step.failure);
+            retry_step(step.failure);
             continue;
           }
-
-        computing_timer.enter_subsection("curvature and energy");
-        const double new_willmore = geometry.compute_curvature();
-        const double new_energy   = (model.has_inertia() ? model.kinetic_energy(model.candidate_solution()) : 0.0) +
-                                  model.bending_energy(new_willmore);
-        computing_timer.leave_subsection("curvature and energy");
-
-        const EnergyStepController::Decision energy = energy_control.decide(total_energy, new_energy, tau);
+        const Energies                       candidate = candidate_energies();
+        const EnergyStepController::Decision energy    = energy_control.decide(total_energy, candidate.total, tau);
         if (energy.verdict == EnergyStepController::Verdict::reject)
           {
-            model.restore_last_state();
-            time.reject(energy.reason);
+            retry_step(energy.reason);
             continue;
           }
-        if (energy.verdict == EnergyStepController::Verdict::accept_with_warning)
-          pcout << "    warning: energy rose by " << std::setprecision(3) << energy.rise << " at t = " << time.time()
-                << " at a rate that does not fall with τ (space discretization); step accepted" << std::endl;
-        if (energy.step_size)
-          time.set_step_size(*energy.step_size);
-
-        model.accept();
-        time.accept(tau);
-        willmore = new_willmore;
+        accept_step(tau, candidate, energy);
         record_step(tau, step);
         check_mesh_quality();
         if (output.due(time.time()) || !time.before_end())
@@ -126,6 +107,39 @@ namespace FluidSurface
 
     diagnostics.compare_with_mean_rotation(geometry);
     write_summary();
+  }
+
+  FullModelScene::Energies
+  FullModelScene::candidate_energies()
+  {
+    TimerOutput::Scope section(computing_timer, "curvature and energy");
+    Energies           candidate;
+    candidate.willmore = geometry.compute_curvature();
+    candidate.total    = (model.has_inertia() ? model.kinetic_energy(model.candidate_solution()) : 0.0) +
+                      model.bending_energy(candidate.willmore);
+    return candidate;
+  }
+
+  void
+  FullModelScene::retry_step(const std::string &reason)
+  {
+    model.restore_last_state();
+    time.reject(reason);
+  }
+
+  void
+  FullModelScene::accept_step(const double                          tau,
+                              const Energies                       &candidate,
+                              const EnergyStepController::Decision &energy)
+  {
+    if (energy.verdict == EnergyStepController::Verdict::accept_with_warning)
+      pcout << "    warning: energy rose by " << std::setprecision(3) << energy.rise << " at t = " << time.time()
+            << " at a rate that does not fall with τ (space discretization); step accepted" << std::endl;
+    if (energy.step_size)
+      time.set_step_size(*energy.step_size);
+    model.accept();
+    time.accept(tau);
+    willmore = candidate.willmore;
   }
 
   void

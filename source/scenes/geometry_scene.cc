@@ -11,10 +11,7 @@ namespace FluidSurface
                                StatisticsFile           &statistics,
                                const ConditionalOStream &pcout,
                                const Timer              &wall_timer)
-    : geometry(geometry)
-    , output(output)
-    , statistics(statistics)
-    , pcout(pcout)
+    : Scene(geometry, output, statistics, pcout)
     , wall_timer(wall_timer)
   {}
 

@@ -58,14 +58,14 @@ namespace FluidSurface
   TimeStepper::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("time stepping");
-    end_time         = prm.get_double("end time");
-    tau              = prm.get_double("time step");
-    adaptive         = prm.get_bool("adaptive");
-    tau_min          = prm.get_double("minimum time step");
-    tau_max          = prm.get_double("maximum time step");
-    growth           = prm.get_double("growth factor");
-    shrink           = prm.get_double("shrink factor");
-    easy_steps       = prm.get_integer("easy steps before growth");
+    end_time                  = prm.get_double("end time");
+    tau                       = prm.get_double("time step");
+    adaptive                  = prm.get_bool("adaptive");
+    tau_min                   = prm.get_double("minimum time step");
+    tau_max                   = prm.get_double("maximum time step");
+    growth                    = prm.get_double("growth factor");
+    shrink                    = prm.get_double("shrink factor");
+    easy_steps                = prm.get_integer("easy steps before growth");
     relative_energy_tolerance = prm.get_double("energy tolerance");
     if (tau_min > tau_max)
       throw_invalid_entry("time stepping/minimum time step",

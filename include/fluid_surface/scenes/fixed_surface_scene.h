@@ -56,7 +56,7 @@ namespace FluidSurface
       dealii::types::global_dof_index n_dofs     = 0;
     };
 
-    /// The scene works on the surface, files and screen of the Simulation (or of a test).
+    /// See Scene.
     FixedSurfaceScene(SurfaceGeometry                  &geometry,
                       OutputWriter                     &output,
                       StatisticsFile                   &statistics,
@@ -107,11 +107,8 @@ namespace FluidSurface
     void
     write_output(const SurfaceFlow &flow, const double time);
 
-    SurfaceGeometry                  &geometry;
-    OutputWriter                     &output;
-    StatisticsFile                   &statistics;
-    const dealii::ConditionalOStream &pcout;
-    dealii::Timer                     wall_timer;
+    /// Wall time since run() started.
+    dealii::Timer wall_timer;
 
     Problem                 problem       = Problem::manufactured_sphere;
     unsigned int            mode_number   = 2;

@@ -1,19 +1,17 @@
 #ifndef fluid_surface_scenes_full_model_scene_h
 #define fluid_surface_scenes_full_model_scene_h
 
-#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
-#include <fluid_surface/geometry/surface_geometry.h>
 #include <fluid_surface/io/checkpoint.h>
-#include <fluid_surface/io/output_writer.h>
-#include <fluid_surface/io/statistics_file.h>
 #include <fluid_surface/model/fluid_deformable_surface.h>
 #include <fluid_surface/postprocess/diagnostics.h>
 #include <fluid_surface/scenes/scene.h>
 #include <fluid_surface/time_stepping/energy_step_controller.h>
 #include <fluid_surface/time_stepping/time_stepper.h>
+
+#include <string>
 
 namespace FluidSurface
 {
@@ -29,7 +27,7 @@ namespace FluidSurface
   class FullModelScene : public Scene
   {
   public:
-    /// The scene works on the surface, files, screen and wall clock of the Simulation.
+    /// See Scene; @p wall_timer is the Simulation's clock (the wall time of the run).
     FullModelScene(const MPI_Comm                    communicator,
                    SurfaceGeometry                  &geometry,
                    OutputWriter                     &output,
@@ -50,12 +48,28 @@ namespace FluidSurface
     run() override;
 
   private:
+    /// ½∫H² and the total energy F of a state.
+    struct Energies
+    {
+      double willmore = 0;
+      double total    = 0;
+    };
+
     /// Sets up the model at t = 0 and records and writes the initial state.
     void
     set_up_initial_state();
     /// Restores every component from the checkpoint and checks that it reproduces its total energy.
     void
     resume_from_checkpoint();
+    /// The energies of the solved step that is not yet accepted (the curvature of its surface is computed here).
+    Energies
+    candidate_energies();
+    /// Undoes the last step and shrinks τ for its retry (std::runtime_error with @p reason below τ_min).
+    void
+    retry_step(const std::string &reason);
+    /// Makes the solved step of size @p tau the current state; τ for the next step as the @p energy check says.
+    void
+    accept_step(const double tau, const Energies &candidate, const EnergyStepController::Decision &energy);
     /// One statistics row and screen report of the accepted state.
     void
     record_step(const double tau, const FluidDeformableSurface::StepResult &step);
@@ -87,12 +101,8 @@ namespace FluidSurface
       return wall_time_before_restart + wall_timer.wall_time();
     }
 
-    MPI_Comm                          communicator;
-    SurfaceGeometry                  &geometry;
-    OutputWriter                     &output;
-    StatisticsFile                   &statistics;
-    dealii::ConditionalOStream        pcout; ///< the Simulation's screen (rank 0)
-    const dealii::Timer              &wall_timer;
+    MPI_Comm             communicator;
+    const dealii::Timer &wall_timer;
     /// Wall time per section: assembly, factorization, linear solve, curvature and energy, diagnostics,
     /// output. Printed at the end when `output/report wall time` is on; always written to the file `timing`.
     dealii::TimerOutput computing_timer;

@@ -1,12 +1,8 @@
 #ifndef fluid_surface_scenes_geometry_scene_h
 #define fluid_surface_scenes_geometry_scene_h
 
-#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
-#include <fluid_surface/geometry/surface_geometry.h>
-#include <fluid_surface/io/output_writer.h>
-#include <fluid_surface/io/statistics_file.h>
 #include <fluid_surface/scenes/scene.h>
 
 namespace FluidSurface
@@ -19,12 +15,12 @@ namespace FluidSurface
   class GeometryScene : public Scene
   {
   public:
-    /// The scene works on the surface, files, screen and wall clock of the Simulation.
-    GeometryScene(SurfaceGeometry                &geometry,
-                  OutputWriter                   &output,
-                  StatisticsFile                 &statistics,
+    /// See Scene; @p wall_timer is the Simulation's clock, for the statistics.
+    GeometryScene(SurfaceGeometry                  &geometry,
+                  OutputWriter                     &output,
+                  StatisticsFile                   &statistics,
                   const dealii::ConditionalOStream &pcout,
-                  const dealii::Timer            &wall_timer);
+                  const dealii::Timer              &wall_timer);
 
     /// The scene has no parameters of its own.
     void
@@ -34,11 +30,7 @@ namespace FluidSurface
     run() override;
 
   private:
-    SurfaceGeometry                 &geometry;
-    OutputWriter                    &output;
-    StatisticsFile                  &statistics;
-    const dealii::ConditionalOStream &pcout;
-    const dealii::Timer             &wall_timer;
+    const dealii::Timer &wall_timer;
   };
 } // namespace FluidSurface
 

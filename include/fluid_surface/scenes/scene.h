@@ -1,7 +1,12 @@
 #ifndef fluid_surface_scenes_scene_h
 #define fluid_surface_scenes_scene_h
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
+
+#include <fluid_surface/geometry/surface_geometry.h>
+#include <fluid_surface/io/output_writer.h>
+#include <fluid_surface/io/statistics_file.h>
 
 namespace FluidSurface
 {
@@ -34,6 +39,23 @@ namespace FluidSurface
     /// Computes the scene on the built surface; writes into the prepared output directory.
     virtual void
     run() = 0;
+
+  protected:
+    /// A scene works on the surface, the output files and the screen of the Simulation (or of a test).
+    Scene(SurfaceGeometry                  &geometry,
+          OutputWriter                     &output,
+          StatisticsFile                   &statistics,
+          const dealii::ConditionalOStream &pcout)
+      : geometry(geometry)
+      , output(output)
+      , statistics(statistics)
+      , pcout(pcout)
+    {}
+
+    SurfaceGeometry           &geometry;
+    OutputWriter              &output;
+    StatisticsFile            &statistics;
+    dealii::ConditionalOStream pcout; ///< the screen (active on rank 0)
   };
 } // namespace FluidSurface
 

@@ -22,11 +22,14 @@ namespace FluidSurface
     /// A stepper with the declared defaults of every entry.
     TimeStepper();
 
+    /// Declares `subsection time stepping`.
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+    /// Reads it (InputError if τ_min > τ_max, or τ₀ > τ_max with adaptive τ) and starts at t = 0.
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
+    /// The time t of the current (accepted) state.
     double
     time() const
     {
@@ -35,21 +38,25 @@ namespace FluidSurface
     /// τ for the next attempt (never past the end time).
     double
     step_size() const;
+    /// The number of accepted steps.
     unsigned int
     step_number() const
     {
       return n_accepted;
     }
+    /// The number of rejected step attempts.
     unsigned int
     n_rejected_steps() const
     {
       return n_rejected;
     }
+    /// Whether t has not reached the end time T (to rounding).
     bool
     before_end() const
     {
       return current_time < end_time * (1 - 1e-12);
     }
+    /// The end time T.
     double
     final_time() const
     {
