@@ -4,6 +4,7 @@
 // elongation axis z. Errors at refinements 2 and 3 (Q2 geometry).
 #include <deal.II/base/mpi.h>
 
+#include <fluid_surface/time_stepping/time_stepper.h>
 #include <fluid_surface/postprocess/diagnostics.h>
 #include <fluid_surface/geometry/exact_geometry.h>
 #include <fluid_surface/model/fluid_deformable_surface.h>
@@ -34,7 +35,9 @@ main(int argc, char **argv)
       geometry.parse_parameters(prm);
       geometry.create();
       FluidDeformableSurface model(geometry);
-      model.parse_parameters(prm);
+      TimeStepper time;
+      time.parse_parameters(prm);
+      model.parse_parameters(prm, time.maximum_step_size());
       model.setup();
       Diagnostics diagnostics;
       diagnostics.parse_parameters(prm);

@@ -4,6 +4,7 @@
 #ifndef fluid_surface_tests_surface_run_h
 #define fluid_surface_tests_surface_run_h
 
+#include <fluid_surface/time_stepping/time_stepper.h>
 #include <fluid_surface/postprocess/diagnostics.h>
 #include <fluid_surface/model/fluid_deformable_surface.h>
 #include <fluid_surface/scenes/simulation.h>
@@ -40,7 +41,9 @@ namespace FluidSurface
       prm.leave_subsection();
       geometry.parse_parameters(prm);
       geometry.create();
-      model.parse_parameters(prm);
+      TimeStepper time;
+      time.parse_parameters(prm);
+      model.parse_parameters(prm, time.maximum_step_size());
       model.setup();
       diagnostics.parse_parameters(prm);
     }

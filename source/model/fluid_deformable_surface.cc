@@ -68,15 +68,6 @@ namespace FluidSurface
   }
 
   void
-  FluidDeformableSurface::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("time stepping");
-    const double maximum_time_step = prm.get_double("maximum time step");
-    prm.leave_subsection();
-    parse_parameters(prm, maximum_time_step);
-  }
-
-  void
   FluidDeformableSurface::parse_parameters(ParameterHandler &prm, const double maximum_time_step)
   {
     reject_entries_unused_by_scene({"fixed surface/*", "fixed surface solver/*"}, "full");

@@ -33,7 +33,7 @@ namespace FluidSurface
   {
     time.parse_parameters(prm);
     energy_control = EnergyStepController(time.energy_tolerance());
-    model.parse_parameters(prm);
+    model.parse_parameters(prm, time.maximum_step_size());
     diagnostics.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
   }

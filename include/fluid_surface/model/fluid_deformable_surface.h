@@ -71,9 +71,6 @@ namespace FluidSurface
      */
     void
     parse_parameters(dealii::ParameterHandler &prm, const double maximum_time_step);
-    /// As above with τ_max read from `time stepping/maximum time step`.
-    void
-    parse_parameters(dealii::ParameterHandler &prm);
 
     /// Distributes DoFs, sets the initial velocity and remembers V₀ and A₀.
     void

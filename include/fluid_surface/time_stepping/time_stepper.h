@@ -63,6 +63,13 @@ namespace FluidSurface
       return end_time;
     }
 
+    /// τ_max of `maximum time step`.
+    double
+    maximum_step_size() const
+    {
+      return tau_max;
+    }
+
     /// ε_F of `energy tolerance`: the largest relative rate at which the total energy may rise.
     double
     energy_tolerance() const
