@@ -115,7 +115,7 @@ namespace FluidSurface
     inertia    = fluid.inertia;
     convection = fluid.convection;
     prm.enter_subsection("fixed surface solver");
-    scheme = prm.get("time scheme") == "BDF1" ? TimeScheme::bdf1 : TimeScheme::bdf2;
+    time_scheme = prm.get("time scheme") == "BDF1" ? TimeScheme::bdf1 : TimeScheme::bdf2;
     const std::string normal = prm.get("penalty normal");
     penalty_normal   = normal == "exact" ? PenaltyNormal::exact :
                        normal == "continuous" ? PenaltyNormal::continuous : PenaltyNormal::cell;
@@ -124,12 +124,12 @@ namespace FluidSurface
     penalty_factor   = prm.get_double("penalty factor");
     penalty_exponent = prm.get_double("penalty exponent");
     solver = prm.get("linear solver") == "direct" ? LinearSolver::direct : LinearSolver::block_preconditioned;
-    amg_smoother         = prm.get("velocity AMG smoother");
-    amg_aggregation_threshold = prm.get_double("velocity AMG aggregation threshold");
-    amg_operator = prm.get("velocity AMG operator") == "Q2" ? VelocityAMGOperator::q2 :
+    velocity_amg_smoother         = prm.get("velocity AMG smoother");
+    velocity_amg_aggregation_threshold = prm.get_double("velocity AMG aggregation threshold");
+    velocity_amg_operator = prm.get("velocity AMG operator") == "Q2" ? VelocityAMGOperator::q2 :
                                                               VelocityAMGOperator::low_order_refined;
-    amg_node_frames = prm.get_bool("velocity AMG node frames");
-    max_iterations       = prm.get_integer("max linear iterations");
+    velocity_amg_node_frames = prm.get_bool("velocity AMG node frames");
+    max_linear_iterations = prm.get_integer("max linear iterations");
     if (!(penalty_factor > 0))
       throw_invalid_entry("fixed surface solver/penalty factor", prm.get("penalty factor"), "a positive β");
     if (tangentiality == Tangentiality::multiplier && solver != LinearSolver::direct)
@@ -217,7 +217,7 @@ namespace FluidSurface
   {
     std::ostringstream out;
     out << "Taylor–Hood [Q2]³×Q1, " << n_u << " + " << n_p << " DoFs, Re = " << parameters.Re << ", "
-        << (with_time_derivative ? (parameters.scheme == TimeScheme::bdf1 ? "BDF1" : "BDF2") : "stationary")
+        << (with_time_derivative ? (parameters.time_scheme == TimeScheme::bdf1 ? "BDF1" : "BDF2") : "stationary")
         << (with_convection ? " + convection" : "") << ", penalty η = " << parameters.penalty_factor
         << " h^-" << parameters.penalty_exponent << " with "
         << (parameters.penalty_normal == PenaltyNormal::exact ?
@@ -231,8 +231,8 @@ namespace FluidSurface
         << (parameters.solver == LinearSolver::direct ?
               linear_solver.direct_solver() :
               std::string("GMRES + block AMG (") +
-                (parameters.amg_operator == VelocityAMGOperator::q2 ? "Q2" : "low-order refined") +
-                (parameters.amg_node_frames ? ", node frames)" : ", Cartesian)"));
+                (parameters.velocity_amg_operator == VelocityAMGOperator::q2 ? "Q2" : "low-order refined") +
+                (parameters.velocity_amg_node_frames ? ", node frames)" : ", Cartesian)"));
     return out.str();
   }
 
@@ -302,7 +302,7 @@ namespace FluidSurface
         SparsityTools::distribute_sparsity_pattern(bdsp, owned, communicator, relevant);
         preconditioner_matrix.reinit(owned_partitioning, bdsp, communicator);
         pressure_laplace.reinit(owned_partitioning, bdsp, communicator);
-        if (parameters.amg_operator == VelocityAMGOperator::low_order_refined)
+        if (parameters.velocity_amg_operator == VelocityAMGOperator::low_order_refined)
           {
             // Couplings of the sub-cells only: 9 nodes per row instead of 25. The velocity DoFs are
             // the first n_u, so the constraints apply unchanged.
@@ -527,7 +527,7 @@ namespace FluidSurface
     const unsigned int               n      = fe.n_dofs_per_cell();
     const unsigned int               n_q    = fv.n_quadrature_points;
     const double                     tau    = current_tau;
-    const std::array<double, 3>      bdf    = bdf_coefficients(parameters.scheme, n_steps_done);
+    const std::array<double, 3>      bdf    = bdf_coefficients(parameters.time_scheme, n_steps_done);
     const bool                       build_preconditioner =
       copy.with_matrix && parameters.solver == LinearSolver::block_preconditioned && preconditioner_outdated;
 
@@ -641,9 +641,9 @@ namespace FluidSurface
           }
       }
 
-    const bool lor = build_preconditioner && parameters.amg_operator == VelocityAMGOperator::low_order_refined;
+    const bool lor = build_preconditioner && parameters.velocity_amg_operator == VelocityAMGOperator::low_order_refined;
     copy.with_lor  = lor;
-    if (build_preconditioner && (lor || parameters.amg_node_frames))
+    if (build_preconditioner && (lor || parameters.velocity_amg_node_frames))
       assemble_amg_matrices(cell, scratch, copy, penalty);
   }
 
@@ -657,8 +657,8 @@ namespace FluidSurface
     const unsigned int               n   = fe.n_dofs_per_cell();
     const double                     Re  = parameters.Re;
     const double                     tau = current_tau;
-    const std::array<double, 3>      bdf = bdf_coefficients(parameters.scheme, n_steps_done);
-    const bool lor = parameters.amg_operator == VelocityAMGOperator::low_order_refined;
+    const std::array<double, 3>      bdf = bdf_coefficients(parameters.time_scheme, n_steps_done);
+    const bool lor = parameters.velocity_amg_operator == VelocityAMGOperator::low_order_refined;
 
     // Node frames [t₁ t₂ n] (Cartesian at constrained nodes): the AMG sees the velocity block in
     // tangential and normal components, so the penalty, which acts on the normal component only,
@@ -666,7 +666,7 @@ namespace FluidSurface
     std::array<Tensor<2, 3>, 9> frames;
     for (unsigned int k = 0; k < 9; ++k)
       frames[k] = Tensor<2, 3>(unit_symmetric_tensor<3>());
-    if (parameters.amg_node_frames)
+    if (parameters.velocity_amg_node_frames)
       {
         const typename DoFHandler<2, 3>::active_cell_iterator geometry_cell(&geometry.triangulation(),
                                                                             cell->level(),
@@ -817,7 +817,7 @@ namespace FluidSurface
           {
             preconditioner_matrix = 0;
             pressure_laplace      = 0;
-            if (parameters.amg_operator == VelocityAMGOperator::low_order_refined)
+            if (parameters.velocity_amg_operator == VelocityAMGOperator::low_order_refined)
               lor_velocity_matrix = 0;
           }
       }
@@ -839,7 +839,7 @@ namespace FluidSurface
           {
             preconditioner_matrix.compress(VectorOperation::add);
             pressure_laplace.compress(VectorOperation::add);
-            if (parameters.amg_operator == VelocityAMGOperator::low_order_refined)
+            if (parameters.velocity_amg_operator == VelocityAMGOperator::low_order_refined)
               lor_velocity_matrix.compress(VectorOperation::add);
           }
         matrix_assembled = true;
@@ -925,7 +925,7 @@ namespace FluidSurface
               const unsigned int point = fe.system_to_base_index(i).second;
               node.position            = node_values.quadrature_point(point);
               node.normal              = normals[point] / normals[point].norm();
-              node.frame = parameters.amg_node_frames ? lor_frame(node.position, normals[point], constrained) :
+              node.frame = parameters.velocity_amg_node_frames ? lor_frame(node.position, normals[point], constrained) :
                                                         Tensor<2, 3>(unit_symmetric_tensor<3>());
               nodes.push_back(node);
             }
@@ -938,25 +938,25 @@ namespace FluidSurface
   {
     if (!block_preconditioner.initialized())
       {
-        const bool lor = parameters.amg_operator == VelocityAMGOperator::low_order_refined;
+        const bool lor = parameters.velocity_amg_operator == VelocityAMGOperator::low_order_refined;
         block_preconditioner.initialize(lor ? lor_velocity_matrix : preconditioner_matrix.block(0, 0),
                                         velocity_nodes(),
                                         preconditioner_matrix.block(1, 1),
                                         with_time_derivative ? &pressure_laplace.block(1, 1) : nullptr,
-                                        {parameters.amg_smoother,
-                                         parameters.amg_aggregation_threshold,
+                                        {parameters.velocity_amg_smoother,
+                                         parameters.velocity_amg_aggregation_threshold,
                                          !lor,
-                                         parameters.amg_node_frames,
+                                         parameters.velocity_amg_node_frames,
                                          linear_solver.direct_solver()});
       }
-    const double alpha0 = with_time_derivative ? bdf_coefficients(parameters.scheme, n_steps_done)[0] : 0.0;
+    const double alpha0 = with_time_derivative ? bdf_coefficients(parameters.time_scheme, n_steps_done)[0] : 0.0;
     return block_preconditioner.solve(system_matrix,
                                       x,
                                       system_rhs,
                                       1.0 / parameters.Re,
                                       with_time_derivative ? alpha0 / current_tau : 0.0,
                                       linear_solver.get_parameters().tolerance,
-                                      parameters.max_iterations);
+                                      parameters.max_linear_iterations);
   }
 
   SurfaceFlow::SolveInfo
@@ -1010,7 +1010,7 @@ namespace FluidSurface
   SurfaceFlow::advance(const double time, const double tau)
   {
     // The matrix depends on τ and α₀ (BDF2 starts with a BDF1 step) and, with convection, on w.
-    const double alpha0               = bdf_coefficients(parameters.scheme, n_steps_done)[0];
+    const double alpha0               = bdf_coefficients(parameters.time_scheme, n_steps_done)[0];
     const bool   coefficients_changed = !matrix_assembled || tau != assembled_tau || alpha0 != assembled_alpha0;
     const bool   matrix_changed       = with_convection || coefficients_changed;
     assembled_tau                     = tau;

@@ -130,18 +130,18 @@ namespace FluidSurface
       bool   convection{}; ///< convection ∇_w u on/off (with inertia only)
 
       // `subsection fixed surface solver`, set by parse().
-      TimeScheme    scheme{};            ///< `time scheme`
-      Tangentiality tangentiality{};     ///< how u·n = 0 is imposed
-      unsigned int  multiplier_degree{}; ///< polynomial degree of the multiplier λ ∈ Q_d
-      PenaltyNormal penalty_normal{};    ///< n of the penalty η(u·n, v·n)
-      double        penalty_factor{};    ///< β of η = β h^{−q}
-      double        penalty_exponent{};  ///< q of η = β h^{−q}
-      LinearSolver  solver               = LinearSolver::direct;
-      std::string   amg_smoother         = "symmetric block Gauss-Seidel"; ///< ML smoother of the velocity AMG
-      double        amg_aggregation_threshold = 1e-4; ///< ML aggregation threshold of the velocity AMG
-      VelocityAMGOperator amg_operator = VelocityAMGOperator::q2; ///< matrix of the velocity AMG
-      bool          amg_node_frames      = true; ///< velocity AMG in node frames [t₁ t₂ n]
-      unsigned int  max_iterations       = 1000;
+      TimeScheme          time_scheme{};                       ///< `time scheme`
+      Tangentiality       tangentiality{};                     ///< how u·n = 0 is imposed
+      unsigned int        multiplier_degree{};                 ///< polynomial degree of the multiplier λ ∈ Q_d
+      PenaltyNormal       penalty_normal{};                    ///< n of the penalty η(u·n, v·n)
+      double              penalty_factor{};                    ///< β of η = β h^{−q}
+      double              penalty_exponent{};                  ///< q of η = β h^{−q}
+      LinearSolver        solver{};                            ///< `linear solver`: direct or block preconditioned
+      std::string         velocity_amg_smoother;               ///< ML smoother of the velocity AMG
+      double              velocity_amg_aggregation_threshold{}; ///< ML aggregation threshold of the velocity AMG
+      VelocityAMGOperator velocity_amg_operator{};             ///< matrix of the velocity AMG
+      bool                velocity_amg_node_frames{};          ///< velocity AMG in node frames [t₁ t₂ n]
+      unsigned int        max_linear_iterations{};             ///< Krylov iterations of one solve at most
       /// `subsection linear solver`: the direct solver and the tolerance of both solvers.
       ReusedFactorizationSolver::Parameters linear_solver;
 
