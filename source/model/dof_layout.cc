@@ -19,7 +19,13 @@ namespace FluidSurface
         else if (c == bending_component)
           bending_scalar.push_back(i);
         else
-          new_position.push_back(i);
+          {
+            new_position.push_back(i);
+            const unsigned int node = fe.system_to_component_index(i).second;
+            if (node >= new_position_nodes.size())
+              new_position_nodes.resize(node + 1);
+            new_position_nodes[node][c - new_position_component] = i;
+          }
       }
     // u, p are Taylor–Hood [Q2]³ × Q1; κ, y, Y share the degree k of the geometry.
     Assert(fe.base_element(fe.component_to_base_index(velocity_component).first).degree == 2, ExcInternalError());
@@ -27,6 +33,7 @@ namespace FluidSurface
     AssertDimension(velocity.size(), 3 * fe.base_element(fe.component_to_base_index(0).first).n_dofs_per_cell());
     AssertDimension(new_position.size(), 3 * curvature.size());
     AssertDimension(bending_scalar.size(), curvature.size());
+    AssertDimension(new_position_nodes.size(), curvature.size());
     (void)fe;
   }
 } // namespace FluidSurface

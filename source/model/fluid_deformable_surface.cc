@@ -38,6 +38,7 @@ namespace FluidSurface
     BendingForce::declare_parameters(prm);
     VolumeConstraint::declare_parameters(prm);
     MeshRedistribution::declare_parameters(prm);
+    ConservationProjection::declare_parameters(prm);
     prm.enter_subsection("initial state");
     prm.declare_entry("angular velocity",
                       "0",
@@ -75,6 +76,7 @@ namespace FluidSurface
     bending.parse_parameters(prm);
     volume_constraint.parse_parameters(prm, maximum_time_step);
     redistribution.parse_parameters(prm);
+    conservation.parse_parameters(prm);
     momentum_constraints = MomentumConstraints(flow);
     // The linear solver of the step (entries shared with scene fixed surface).
     linear_solver.parse_parameters(prm);
@@ -176,6 +178,7 @@ namespace FluidSurface
       double                           noise;
       std::array<SmoothRandomField, 3> random;
     };
+
   } // namespace
 
   void
@@ -201,6 +204,8 @@ namespace FluidSurface
     target_area                       = m.area;
     current_position                  = geometry.position();
     old_position                      = geometry.position();
+    initial_position                  = geometry.position();
+    set_reference_position();
     last_tau                          = 0;
     geometry.compute_curvature();
   }
@@ -280,12 +285,29 @@ namespace FluidSurface
   }
 
   void
-  FluidDeformableSurface::copy_position_into(VectorType &flow_vector) const
+  FluidDeformableSurface::copy_position_into(const VectorType &x, VectorType &flow_vector) const
   {
-    const VectorType &x = geometry.position();
     for (const auto &pair : position_pairs)
       flow_vector[pair.first] = x[pair.second];
     flow_vector.compress(VectorOperation::insert);
+  }
+
+  void
+  FluidDeformableSurface::set_reference_position()
+  {
+    VectorType reference(owned, geometry.get_communicator());
+    copy_position_into(initial_position, reference);
+    reference_position.reinit(owned, relevant, geometry.get_communicator());
+    reference_position = reference;
+  }
+
+  void
+  FluidDeformableSurface::set_prescribed_velocity(const Function<3> &velocity)
+  {
+    AssertDimension(velocity.n_components, 3);
+    AssertThrow(!volume_constraint.enabled && !rigid_constraints(),
+                ExcMessage("a prescribed motion needs the volume and momentum constraints off"));
+    prescribed_velocity = &velocity;
   }
 
   void
@@ -303,7 +325,7 @@ namespace FluidSurface
                                              random_seed),
                              initial);
     // Y starts at X so that the state is complete; κ, y, p are outputs of a step.
-    copy_position_into(initial);
+    copy_position_into(geometry.position(), initial);
     constraints.distribute(initial);
     current = initial;
   }
@@ -363,6 +385,7 @@ namespace FluidSurface
       , old_velocity(gauss.size())
       , old_velocity_gradient(gauss.size())
       , nodal_smooth_normal(nodal.size())
+      , reference_gradient(gauss.size())
     {}
     AssemblyScratch(const AssemblyScratch &other)
       : AssemblyScratch(other.flow.get_mapping(),
@@ -380,6 +403,11 @@ namespace FluidSurface
     std::vector<Tensor<1, 3>> old_velocity;           ///< u^m
     std::vector<Tensor<2, 3>> old_velocity_gradient;  ///< G^m
     std::vector<Tensor<1, 3>> nodal_smooth_normal;    ///< ñ^m at the nodal points
+    // Law reference: ∇_{S^m}X₀ at the Gauss points, ñ^m by node, the rows of Y before their projection.
+    std::vector<Tensor<2, 3>> reference_gradient;
+    std::vector<Tensor<1, 3>> node_normals;
+    FullMatrix<double>        normal_rows, tangential_rows;
+    Vector<double>            tangential_rhs;
   };
 
   void
@@ -398,9 +426,12 @@ namespace FluidSurface
     // div_P u = s with s = −(A^m − A₀)/(τ_c A^m) returns any area drift (∫div_P u = dA/dt);
     // τ_c = max(τ, τ_drift) keeps the correction bounded when a rejected step shrinks τ.
     const double area_rate = -(m.area - target_area) / (drift_time(tau) * m.area);
-    // The damping target X^m + τR: the mesh moves along with the rigid motion R of the shape (fit of u^m·ν).
-    const RigidMotion carried =
-      redistribution.follow_rigid_motion && redistribution.damping(tau) > 0 ? motion : RigidMotion();
+    // The mesh moves along with the rigid motion R of the shape (fit of u^m·ν): law bgn relaxes towards
+    // X^m + τR, law reference carries the nodes by the rotation itself.
+    const bool        carry   = redistribution.follow_rigid_motion &&
+                        (redistribution.law == MeshRedistribution::Law::reference || redistribution.damping(tau) > 0);
+    const RigidMotion carried = carry ? motion : RigidMotion();
+    const double      area_scale = target_area / m.area;
 
     const QGauss<2>     gauss(fe->degree + 1);
     const Quadrature<2> nodal = redistribution.nodal_quadrature(gauss, geometry.degree());
@@ -408,7 +439,7 @@ namespace FluidSurface
     auto worker = [&](const typename DoFHandler<2, 3>::active_cell_iterator &cell,
                       AssemblyScratch                                      &scratch,
                       LocalSystem                                          &local) {
-      assemble_cell(cell, tau, area_rate, carried, scratch, local);
+      assemble_cell(cell, tau, area_rate, carried, area_scale, scratch, local);
     };
     auto copier = [&](const LocalSystem &local) {
       constraints.distribute_local_to_global(local.matrix, local.rhs, local.indices, system_matrix, system_rhs);
@@ -444,6 +475,7 @@ namespace FluidSurface
                                         const double                                         tau,
                                         const double                                         area_rate,
                                         const RigidMotion                                   &carried,
+                                        const double                                         area_scale,
                                         AssemblyScratch                                     &scratch,
                                         LocalSystem                                         &local) const
   {
@@ -455,6 +487,17 @@ namespace FluidSurface
                                                                         cell->index(),
                                                                         &geometry.dof_handler());
     const FEValuesExtractors::Vector vector(0);
+    const bool reference_law = redistribution.law == MeshRedistribution::Law::reference;
+    // Law reference: (∇_S Y, ∇_S η) only defines κ (normal rows), the membrane energy moves the nodes
+    // tangentially, and both are projected at the nodes after the nodal loop.
+    const Tensor<2, 3> rotation = carried.rotation_over(tau);
+    if (reference_law)
+      {
+        scratch.normal_rows.reinit(fe->n_dofs_per_cell(), fe->n_dofs_per_cell());
+        scratch.tangential_rows.reinit(fe->n_dofs_per_cell(), fe->n_dofs_per_cell());
+        scratch.tangential_rhs.reinit(fe->n_dofs_per_cell());
+        scratch.node_normals.resize(layout->new_position_nodes.size());
+      }
 
     // Gauss points: the flow terms, the bending force and scalar, (∇_S Y, ∇_S η), the global columns.
     scratch.flow.reinit(cell);
@@ -463,6 +506,9 @@ namespace FluidSurface
     scratch.geometry[vector].get_function_gradients(geometry.normal_field(), scratch.smooth_normal_gradient);
     scratch.flow[vector].get_function_values(current, scratch.old_velocity);
     scratch.flow[vector].get_function_gradients(current, scratch.old_velocity_gradient);
+    if (reference_law)
+      scratch.flow[FEValuesExtractors::Vector(position_component)].get_function_gradients(
+        reference_position, scratch.reference_gradient);
     SurfacePointValues &point = scratch.point;
     for (unsigned int q = 0; q < scratch.flow.n_quadrature_points; ++q)
       {
@@ -473,9 +519,22 @@ namespace FluidSurface
                      scratch.old_velocity[q],
                      scratch.old_velocity_gradient[q]);
         assemble_flow_terms(point, tau, area_rate, local);
-        bending.assemble_force(point, *layout, local.matrix);
+        if (prescribed_velocity == nullptr)
+          bending.assemble_force(point, *layout, local.matrix);
         bending.assemble_bending_scalar(point, *layout, local.matrix);
-        redistribution.assemble_surface_laplacian(point, *layout, local.matrix);
+        if (reference_law)
+          {
+            redistribution.assemble_surface_laplacian(point, *layout, scratch.normal_rows);
+            redistribution.assemble_reference_terms(point,
+                                                    scratch.reference_gradient[q],
+                                                    rotation,
+                                                    area_scale,
+                                                    *layout,
+                                                    scratch.tangential_rows,
+                                                    scratch.tangential_rhs);
+          }
+        else
+          redistribution.assemble_surface_laplacian(point, *layout, local.matrix);
         volume_constraint.assemble_column(point, *layout, local.volume_column);
         if (rigid)
           momentum_constraints.assemble_columns(point, *layout, local.rigid_columns);
@@ -496,10 +555,33 @@ namespace FluidSurface
     for (unsigned int q = 0; q < scratch.flow_nodal.n_quadrature_points; ++q)
       {
         nodal.reinit(scratch.flow_nodal, q, scratch.nodal_smooth_normal[q]);
-        redistribution.assemble_kinematics(nodal, *layout, tau, local.matrix, local.rhs);
-        redistribution.assemble_nodal_terms(
-          nodal, *layout, tau, carried.value(nodal.position), local.matrix, local.rhs);
+        const Point<3> &x = nodal.position;
+        if (reference_law)
+          {
+            const Point<3> carried_position = carried.carry(x, tau);
+            redistribution.assemble_kinematics(
+              nodal, *layout, tau, carried_position - tau * carried.value(x), local.matrix, local.rhs);
+            redistribution.assemble_nodal_terms(nodal, *layout, tau, carried_position, local.matrix, local.rhs);
+            // The nodal rule's points are the nodes: the node whose shape function is 1 here.
+            for (unsigned int n = 0; n < layout->new_position_nodes.size(); ++n)
+              if (std::abs(nodal.new_position[layout->new_position_nodes[n][0]][0] - 1.0) < 1e-8)
+                scratch.node_normals[n] = nodal.smooth_normal;
+          }
+        else
+          {
+            redistribution.assemble_kinematics(nodal, *layout, tau, x, local.matrix, local.rhs);
+            redistribution.assemble_nodal_terms(
+              nodal, *layout, tau, x + tau * carried.value(x), local.matrix, local.rhs);
+          }
       }
+    if (reference_law)
+      MeshRedistribution::project_position_rows(scratch.node_normals,
+                                                *layout,
+                                                scratch.normal_rows,
+                                                scratch.tangential_rows,
+                                                scratch.tangential_rhs,
+                                                local.matrix,
+                                                local.rhs);
   }
 
   void
@@ -511,6 +593,23 @@ namespace FluidSurface
     const FlowPointValues &p       = point.flow;
     const double           dA      = p.JxW;
     const double           inv_tau = 1.0 / tau;
+    if (prescribed_velocity != nullptr)
+      {
+        // (u, v) = (u_prescribed, v) and (p, q) = 0: the L² projection of the prescribed velocity.
+        Tensor<1, 3> u;
+        for (unsigned int d = 0; d < 3; ++d)
+          u[d] = prescribed_velocity->value(p.position, d);
+        for (const unsigned int i : layout->velocity)
+          {
+            local.rhs(i) += (u * p.velocity[i]) * dA;
+            for (const unsigned int j : layout->velocity)
+              local.matrix(i, j) += (p.velocity[i] * p.velocity[j]) * dA;
+          }
+        for (const unsigned int i : layout->pressure)
+          for (const unsigned int j : layout->pressure)
+            local.matrix(i, j) += p.pressure[i] * p.pressure[j] * dA;
+        return;
+      }
     // The mass term: the inertia (1/τ)(u, v), or the Stokes limit's regularization ε(u, v).
     const double mass = flow.inertia ? inv_tau : momentum_constraints.regularization();
     for (const unsigned int i : layout->velocity)
@@ -561,6 +660,37 @@ namespace FluidSurface
     return translation + cross_product_3d(rotation, x - centre);
   }
 
+  Tensor<2, 3>
+  FluidDeformableSurface::RigidMotion::rotation_over(const double tau) const
+  {
+    const double angle = tau * rotation.norm();
+    Tensor<2, 3> Q     = unit_symmetric_tensor<3>();
+    if (angle == 0)
+      return Q;
+    const Tensor<1, 3> axis = rotation / rotation.norm();
+    Tensor<2, 3>       cross; // [axis]×
+    cross[0][1] = -axis[2];
+    cross[0][2] = axis[1];
+    cross[1][0] = axis[2];
+    cross[1][2] = -axis[0];
+    cross[2][0] = -axis[1];
+    cross[2][1] = axis[0];
+    Q += std::sin(angle) * cross + (1.0 - std::cos(angle)) * (cross * cross);
+    return Q;
+  }
+
+  Point<3>
+  FluidDeformableSurface::RigidMotion::carry(const Point<3> &x, const double tau) const
+  {
+    const double omega_squared = rotation.norm_square();
+    if (omega_squared == 0)
+      return x + tau * translation;
+    // R = U_∥ + Ω × (x − p), a screw motion about the axis through p = x_c + Ω × U_⊥/|Ω|²; its flow over τ.
+    const Tensor<1, 3> along  = (translation * rotation) / omega_squared * rotation;
+    const Point<3>     pivot  = centre + cross_product_3d(rotation, translation - along) / omega_squared;
+    return pivot + rotation_over(tau) * (x - pivot) + tau * along;
+  }
+
   FluidDeformableSurface::RigidMotion
   FluidDeformableSurface::rigid_motion(const VectorType &state) const
   {
@@ -590,7 +720,12 @@ namespace FluidSurface
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          fe_values[velocity].get_function_values(state, u);
+          if (prescribed_velocity != nullptr)
+            for (unsigned int k = 0; k < q.size(); ++k)
+              for (unsigned int d = 0; d < 3; ++d)
+                u[k][d] = prescribed_velocity->value(fe_values.quadrature_point(k), d);
+          else
+            fe_values[velocity].get_function_values(state, u);
           for (unsigned int k = 0; k < q.size(); ++k)
             {
               const double        dA = fe_values.JxW(k);
@@ -622,16 +757,34 @@ namespace FluidSurface
     // The rigid motion of the shape: R minimizing ∫(u·ν − R·ν)² + ε|S| |c|², c the coefficients of R in the
     // scaled basis. ε cuts off the motions that hardly move the shape: the rotation of a body about its own
     // axis of symmetry (R·ν ≡ 0) moves no surface, and its mesh need not move.
-    FullMatrix<double> normal_matrix(6, 6), inverse(6, 6);
-    Vector<double>     rhs(6), coefficients(6);
+    Vector<double> rhs(6), coefficients(6);
     for (unsigned int j = 0; j < 6; ++j)
-      {
-        rhs(j) = sums[6 + j];
-        for (unsigned int l = 0; l < 6; ++l)
-          normal_matrix(j, l) = sums[12 + 6 * j + l] + (j == l ? redistribution.rigid_motion_cutoff * m.area : 0.0);
-      }
+      rhs(j) = sums[6 + j];
+    const double cutoff = redistribution.rigid_motion_cutoff * m.area;
+    FullMatrix<double> normal_matrix(6, 6), inverse(6, 6);
+    for (unsigned int j = 0; j < 6; ++j)
+      for (unsigned int l = 0; l < 6; ++l)
+        normal_matrix(j, l) = sums[12 + 6 * j + l] + (j == l ? cutoff : 0.0);
     inverse.invert(normal_matrix);
     inverse.vmult(coefficients, rhs);
+    if (redistribution.law == MeshRedistribution::Law::reference)
+      {
+        // Iterated Tikhonov: c ← c + (G + ε)⁻¹(b − G c), 11 more times, filters each mode of the Gram matrix G by
+        // 1 − (ε/(λ + ε))¹²: motions with λ ≥ 20ε (a tumbling body) are fitted to round-off, so that a rigid
+        // velocity is followed exactly, and those with λ ≪ ε (the spin of an axisymmetric body) are dropped.
+        Vector<double> residual(6), update(6);
+        for (unsigned int iteration = 0; iteration < 11; ++iteration)
+          {
+            for (unsigned int j = 0; j < 6; ++j)
+              {
+                residual(j) = rhs(j);
+                for (unsigned int l = 0; l < 6; ++l)
+                  residual(j) -= sums[12 + 6 * j + l] * coefficients(l);
+              }
+            inverse.vmult(update, residual);
+            coefficients += update;
+          }
+      }
     for (unsigned int d = 0; d < 3; ++d)
       {
         motion.translation[d] = coefficients(d);
@@ -646,8 +799,10 @@ namespace FluidSurface
     StepResult result;
     // The momenta of u^m and the rigid motion of the shape, once per step (the mesh damping target and the
     // constant parts of the momentum constraints).
-    const bool        need_motion = (redistribution.follow_rigid_motion && redistribution.relaxation_time > 0) ||
-                             (rigid_constraints() && flow.inertia);
+    const bool need_motion =
+      (redistribution.follow_rigid_motion &&
+       (redistribution.relaxation_time > 0 || redistribution.law == MeshRedistribution::Law::reference)) ||
+      (rigid_constraints() && flow.inertia);
     const RigidMotion motion      = need_motion ? rigid_motion(current) : RigidMotion();
     {
       TimerSection section(step_timer, "assembly");
@@ -725,6 +880,17 @@ namespace FluidSurface
       result.dissipation_rate = dissipation_rate(candidate);
     }
     copy_new_position_to_geometry(candidate);
+    if (conservation.enabled && prescribed_velocity == nullptr)
+      {
+        result.node_correction =
+          conservation.project_area_and_volume(geometry, target_area, target_volume, volume_constraint.enabled);
+        VectorType state(owned, geometry.get_communicator());
+        state = candidate;
+        copy_position_into(geometry.position(), state);
+        if (flow.conserve_momenta && flow.inertia)
+          result.momentum_correction = conservation.project_momenta(geometry, dofs, rigid_targets, state);
+        candidate = state;
+      }
     last_step_tau = tau;
     result.solved = true;
     return result;
@@ -783,6 +949,7 @@ namespace FluidSurface
   {
     data.set_fields("flow", dofs, {&current});
     data.set_fields("geometry", geometry.dof_handler(), {&current_position, &old_position});
+    data.set_fields("mesh reference", geometry.dof_handler(), {&initial_position});
     data.set("model/element", fe->get_name());
     data.set("model/target volume", target_volume);
     data.set("model/target area", target_area);
@@ -811,6 +978,11 @@ namespace FluidSurface
     current_position = geometry.position();
     old_position.reinit(geometry.locally_owned_dofs(), geometry.locally_relevant_dofs(), comm);
     old_position  = previous;
+    VectorType initial;
+    data.get_fields("mesh reference", geometry.dof_handler(), {&initial});
+    initial_position.reinit(geometry.locally_owned_dofs(), geometry.locally_relevant_dofs(), comm);
+    initial_position = initial;
+    set_reference_position();
     target_volume = data.get_double("model/target volume");
     target_area   = data.get_double("model/target area");
     linear_solver.set_n_factorizations(data.get_unsigned("model/factorizations"));

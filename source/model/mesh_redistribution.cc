@@ -1,5 +1,6 @@
 #include <deal.II/base/quadrature_lib.h>
 
+#include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/model/mesh_redistribution.h>
 
 namespace FluidSurface
@@ -10,6 +11,26 @@ namespace FluidSurface
   MeshRedistribution::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("mesh redistribution");
+    prm.declare_entry("law",
+                      "bgn",
+                      Patterns::Selection("bgn|reference"),
+                      "The tangential motion of the nodes. bgn: the tangential part of κñ = Δ_S Y (a conformal "
+                      "parametrization of the current surface, Barrett–Garcke–Nürnberg), damped towards X^m + τR. "
+                      "reference: the nodes are carried by the exact rigid motion of the shape (a rotation, not its "
+                      "linearization) and relax on the time scale T_r towards a minimizer of a membrane energy "
+                      "relative to the initial surface S₀ (shear stiffness μ, area stiffness K): a rigid motion "
+                      "does not change the mesh, and element shape and size stay close to those of S₀ "
+                      "(doc/scheme.md). Needs lumped = true.");
+    prm.declare_entry("shear stiffness",
+                      "1",
+                      Patterns::Double(0),
+                      "μ of law reference: the weight of the shear energy ∫_{S₀}(½|∇_{S₀}Y|² − J), zero iff the "
+                      "map from the initial surface S₀ is conformal.");
+    prm.declare_entry("area stiffness",
+                      "1",
+                      Patterns::Double(0),
+                      "K of law reference: the weight of the area energy ½∫_{S₀}(J − 1)², J the element area "
+                      "over its initial area (normalized by the total area).");
     prm.declare_entry("lumped",
                       "true",
                       Patterns::Bool(),
@@ -44,12 +65,18 @@ namespace FluidSurface
   MeshRedistribution::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("mesh redistribution");
+    law                 = prm.get("law") == "reference" ? Law::reference : Law::bgn;
+    shear_stiffness     = prm.get_double("shear stiffness");
+    area_stiffness      = prm.get_double("area stiffness");
     lumped              = prm.get_bool("lumped");
     relaxation_time     = prm.get_double("relaxation time");
     follow_rigid_motion = prm.get_bool("follow rigid motion");
     rigid_motion_cutoff = prm.get_double("rigid motion cutoff");
     mesh_quality_floor  = prm.get_double("mesh quality floor");
     prm.leave_subsection();
+    if (law == Law::reference && !lumped)
+      throw_invalid_entry("mesh redistribution/lumped", "false", "true with law = reference (its tangential "
+                                                                  "projection acts at the nodes)");
   }
 
   Quadrature<2>
@@ -64,6 +91,7 @@ namespace FluidSurface
   MeshRedistribution::assemble_kinematics(const NodalPointValues &point,
                                           const DofLayout        &dofs,
                                           const double            tau,
+                                          const Point<3>         &start,
                                           FullMatrix<double>     &matrix,
                                           Vector<double>         &rhs) const
   {
@@ -73,7 +101,7 @@ namespace FluidSurface
     for (const unsigned int i : dofs.curvature)
       {
         const double phi = point.curvature[i];
-        rhs(i) += inv_tau * (point.position * nt) * phi * dA;
+        rhs(i) += inv_tau * (start * nt) * phi * dA;
         for (const unsigned int j : dofs.new_position)
           matrix(i, j) += inv_tau * (point.new_position[j] * nt) * phi * dA;
         for (const unsigned int j : dofs.velocity)
@@ -96,25 +124,90 @@ namespace FluidSurface
   MeshRedistribution::assemble_nodal_terms(const NodalPointValues &point,
                                            const DofLayout        &dofs,
                                            const double            tau,
-                                           const Tensor<1, 3>     &rigid_velocity,
+                                           const Point<3>         &target,
                                            FullMatrix<double>     &matrix,
                                            Vector<double>         &rhs) const
   {
     const double        damping_factor = damping(tau);
     const double        dA             = point.JxW;
     const Tensor<1, 3> &nt             = point.smooth_normal;
-    const Point<3>     &x              = point.position;
     for (const unsigned int i : dofs.new_position)
       {
-        // (κñ, η)_h, and the tangential damping (T_r/τ)(P̃(Y − X^m − τR), η)_h.
+        // (κñ, η)_h, and the tangential damping (T_r/τ)(P̃(Y − W), η)_h.
         const Tensor<1, 3> &eta         = point.new_position[i];
         const Tensor<1, 3>  eta_tangent = eta - (eta * nt) * nt;
-        rhs(i) += damping_factor * ((x + tau * rigid_velocity) * eta_tangent) * dA;
+        rhs(i) += damping_factor * (target * eta_tangent) * dA;
         for (const unsigned int j : dofs.curvature)
           matrix(i, j) += point.curvature[j] * (nt * eta) * dA;
         if (damping_factor > 0)
           for (const unsigned int j : dofs.new_position)
             matrix(i, j) += damping_factor * (point.new_position[j] * eta_tangent) * dA;
+      }
+  }
+
+  void
+  MeshRedistribution::assemble_reference_terms(const SurfacePointValues &point,
+                                               const Tensor<2, 3>       &reference_gradient,
+                                               const Tensor<2, 3>       &rotation,
+                                               const double              area_scale,
+                                               const DofLayout          &dofs,
+                                               FullMatrix<double>       &matrix,
+                                               Vector<double>           &rhs) const
+  {
+    const double        dA = point.flow.JxW;
+    const Tensor<1, 3> &nu = point.flow.normal;
+    // M = G₀ᵀG₀ acts on the tangent plane of S^m (M ν = 0); its 2D trace and determinant.
+    const Tensor<2, 3> M        = transpose(reference_gradient) * reference_gradient;
+    const double       trace    = dealii::trace(M);
+    const double       det2     = 0.5 * (trace * trace - scalar_product(M, M));
+    const double       root     = std::sqrt(det2);
+    const double       J        = 1.0 / root; // area of S^m over S₀
+    Tensor<2, 3>       tangent  = unit_symmetric_tensor<3>();
+    tangent -= outer_product(nu, nu);
+    const Tensor<2, 3> A        = (trace * tangent - M) / root;
+    const double       mu       = shear_stiffness;
+    const double       K        = area_stiffness * area_scale;
+    const double       sJ       = area_scale * J;
+    for (const unsigned int i : dofs.new_position)
+      {
+        const Tensor<2, 3> &grad_eta = point.new_position_gradient[i];
+        const double        div_eta  = scalar_product(rotation, grad_eta);
+        rhs(i) += (mu + K * (sJ + 1.0)) * div_eta * dA;
+        for (const unsigned int j : dofs.new_position)
+          {
+            const Tensor<2, 3> &grad_Y = point.new_position_gradient[j];
+            matrix(i, j) += (mu * scalar_product(grad_Y * A, grad_eta) +
+                             K * sJ * scalar_product(rotation, grad_Y) * div_eta) *
+                            dA;
+          }
+      }
+  }
+
+  void
+  MeshRedistribution::project_position_rows(const std::vector<Tensor<1, 3>> &node_normals,
+                                            const DofLayout                 &dofs,
+                                            const FullMatrix<double>        &normal_rows,
+                                            const FullMatrix<double>        &tangential_rows,
+                                            const Vector<double>            &tangential_rhs,
+                                            FullMatrix<double>              &matrix,
+                                            Vector<double>                  &rhs)
+  {
+    AssertDimension(node_normals.size(), dofs.new_position_nodes.size());
+    const unsigned int n_columns = matrix.n();
+    for (unsigned int n = 0; n < node_normals.size(); ++n)
+      {
+        const auto         &rows = dofs.new_position_nodes[n];
+        const Tensor<1, 3> &nt   = node_normals[n];
+        for (unsigned int d = 0; d < 3; ++d)
+          for (unsigned int e = 0; e < 3; ++e)
+            {
+              const double normal_part     = nt[d] * nt[e];
+              const double tangential_part = (d == e ? 1.0 : 0.0) - normal_part;
+              rhs(rows[d]) += tangential_part * tangential_rhs(rows[e]);
+              for (unsigned int j = 0; j < n_columns; ++j)
+                matrix(rows[d], j) +=
+                  normal_part * normal_rows(rows[e], j) + tangential_part * tangential_rows(rows[e], j);
+            }
       }
   }
 } // namespace FluidSurface

@@ -269,6 +269,7 @@ namespace FluidSurface
                                     "bending/*",
                                     "volume constraint/*",
                                     "mesh redistribution/*",
+                                    "conservation projection/*",
                                     "initial state/*",
                                     "equilibrium/*",
                                     "diagnostics/*",

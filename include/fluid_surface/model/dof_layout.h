@@ -3,6 +3,7 @@
 
 #include <deal.II/fe/fe.h>
 
+#include <array>
 #include <vector>
 
 namespace FluidSurface
@@ -28,6 +29,9 @@ namespace FluidSurface
     std::vector<unsigned int> curvature;      ///< κ ∈ Q_k
     std::vector<unsigned int> bending_scalar; ///< y ∈ Q_k
     std::vector<unsigned int> new_position;   ///< Y ∈ [Q_k]³
+    /// The local DoFs of Y by node: new_position_nodes[n][d] is the row of component d at node n (the nodes in
+    /// the order of the base element, that of κ).
+    std::vector<std::array<unsigned int, 3>> new_position_nodes;
   };
 } // namespace FluidSurface
 

@@ -17,6 +17,7 @@
 #include <fluid_surface/geometry/surface_geometry.h>
 #include <fluid_surface/linear_algebra/bordered_system.h>
 #include <fluid_surface/model/bending_force.h>
+#include <fluid_surface/model/conservation_projection.h>
 #include <fluid_surface/model/dof_layout.h>
 #include <fluid_surface/model/local_system.h>
 #include <fluid_surface/model/mesh_redistribution.h>
@@ -57,6 +58,8 @@ namespace FluidSurface
       double       dissipation_rate  = 0; ///< (2/Re)‖σ(u)‖² on S^m
       bool         factorized        = false; ///< whether this step computed a new factorization
       double       rigid_force       = 0; ///< Stokes limit: |λ| of the multipliers of ∫u = 0, ∫X×u = 0
+      double       node_correction   = 0; ///< ConservationProjection: the largest normal move of a node
+      double       momentum_correction = 0; ///< ConservationProjection: |P₀ − P| + |L₀ − L| before it
     };
 
     FluidDeformableSurface(SurfaceGeometry &geometry);
@@ -84,6 +87,14 @@ namespace FluidSurface
     StepResult
     advance(const double tau);
 
+    /**
+     * A prescribed motion instead of the flow: from now on advance() moves the surface with the velocity
+     * @p velocity (3 components, evaluated at its current time on S^m; u is its L² projection), through the
+     * same mesh law (kinematics and tangential redistribution) as the coupled problem. No bending force acts;
+     * the volume and momentum constraints must be off. For tests and benchmarks of the mesh law.
+     */
+    void
+    set_prescribed_velocity(const dealii::Function<3> &velocity);
     /// Makes the last advance() the current state.
     void
     accept();
@@ -208,9 +219,17 @@ namespace FluidSurface
       /// R(x) = U + Ω × (x − x_c), whose normal part is closest to u·ν (see rigid_motion()).
       dealii::Tensor<1, 3>
       value(const dealii::Point<3> &x) const;
+      /// Q = exp(τ[Ω]×), the rotation by the angle τ|Ω| about Ω (Rodrigues' formula).
+      dealii::Tensor<2, 3>
+      rotation_over(const double tau) const;
+      /// The exact flow of the (stationary) rigid velocity R over a step @p tau, applied to @p x: the screw
+      /// motion p + Q(x − p) + τU_∥ about the axis of R (U_∥ the part of U along Ω), Q = rotation_over(τ).
+      dealii::Point<3>
+      carry(const dealii::Point<3> &x, const double tau) const;
     };
     /// The momenta of @p state on the current surface, and the rigid motion R whose normal velocity R·ν
-    /// fits u·ν in L² (regularized by `rigid motion cutoff`): the motion of the shape, not of the fluid.
+    /// fits u·ν in L² (regularized by `rigid motion cutoff`): the motion of the shape, not of the fluid. With
+    /// a prescribed velocity, R fits that velocity on the current surface.
     RigidMotion
     rigid_motion(const VectorType &state) const;
     void
@@ -232,6 +251,7 @@ namespace FluidSurface
                   const double                                                   tau,
                   const double                                                   area_rate,
                   const RigidMotion                                             &carried,
+                  const double                                                   area_scale,
                   AssemblyScratch                                               &scratch,
                   LocalSystem                                                   &local) const;
     /**
@@ -247,9 +267,12 @@ namespace FluidSurface
     /// Y of @p flow_solution → the geometry's position field.
     void
     copy_new_position_to_geometry(const VectorType &flow_solution);
-    /// The geometry's position X → the Y components of @p flow_vector (owned).
+    /// The position @p x (geometry numbering) → the Y components of @p flow_vector (owned).
     void
-    copy_position_into(VectorType &flow_vector) const;
+    copy_position_into(const VectorType &x, VectorType &flow_vector) const;
+    /// X₀ (initial_position) → reference_position.
+    void
+    set_reference_position();
     /// D = (2/Re)‖σ(u)‖² of @p state on the current surface (EnergyFunctionals::dissipation_rate).
     double
     dissipation_rate(const VectorType &state) const;
@@ -268,6 +291,7 @@ namespace FluidSurface
     VolumeConstraint    volume_constraint;
     MeshRedistribution  redistribution;
     MomentumConstraints momentum_constraints;
+    ConservationProjection conservation;
 
     // `subsection initial state`: u₀ = U + ω₀ e × (x − c) + ε_u r(x), the shape perturbed by ε_X.
     dealii::Tensor<1, 3> translation_velocity;    ///< U
@@ -292,6 +316,12 @@ namespace FluidSurface
     VectorType                             candidate;        ///< ghosted result of the last advance()
     VectorType                             old_position;     ///< X^{m−1}, geometry numbering, ghosted
     VectorType                             current_position; ///< X^m, geometry numbering, ghosted
+    /// X₀, the reference surface of the mesh law (the initial position), geometry numbering, ghosted.
+    VectorType                             initial_position;
+    /// X₀ in the Y components of the flow numbering, ghosted.
+    VectorType                             reference_position;
+    /// The velocity of a prescribed motion (set_prescribed_velocity()), or none.
+    const dealii::Function<3>             *prescribed_velocity = nullptr;
     /// (flow DoF of Y_d, geometry DoF of X_d) for the locally owned nodes.
     std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>> position_pairs;
     double                                 last_tau = 0;     ///< τ of the step that produced X^m

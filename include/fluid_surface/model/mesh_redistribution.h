@@ -14,11 +14,20 @@
 namespace FluidSurface
 {
   /**
-   * BGN-type mesh motion: the new position Y follows the normal velocity (kinematics,
-   * (Y·ñ, φ)_h = (X^m·ñ, φ)_h + τ(u·ñ, φ)_h), and its tangential motion keeps the mesh regular through
-   * (κñ, η)_h + (∇_S Y, ∇_S η) = 0, i.e. κñ = Δ_S Y (κ = H of the new surface), damped towards X^m + τR
-   * (R the rigid motion of the shape). (·,·)_h is the nodal (Gauss–Lobatto) quadrature when lumping is on, as
-   * in Barrett–Garcke–Nürnberg. Owns `subsection mesh redistribution`.
+   * The mesh motion: the new position Y follows the normal velocity (kinematics) and κñ = Δ_S Y defines the
+   * curvature κ of the new surface (Barrett–Garcke–Nürnberg); the tangential motion of the nodes is the mesh
+   * law, one of
+   *
+   * - `bgn`: the tangential part of (κñ, η)_h + (∇_S Y, ∇_S η) = 0 (a conformal parametrization of the current
+   *   surface), damped towards X^m + τR, R the rigid motion of the shape;
+   * - `reference`: the nodes are carried by the exact rigid motion Z = x_c + Q(τΩ)(X^m − x_c) + τU of the shape
+   *   and relax tangentially, on the time scale T_r, towards a minimizer of a frame-invariant membrane energy
+   *   of the map from the initial (reference) surface S₀: the shear energy μ∫_{S₀}(½|∇_{S₀}Y|² − J) (zero
+   *   iff the map is conformal relative to S₀) plus the area energy (K/2)∫_{S₀}(J − 1)², J = dA/dA₀. A rigid
+   *   motion of S₀ costs nothing, so a tumbling body keeps its mesh; element shape and size stay those of S₀.
+   *
+   * (·,·)_h is the nodal (Gauss–Lobatto) quadrature when lumping is on. Owns `subsection mesh redistribution`.
+   * doc/scheme.md has the discrete equations.
    */
   class MeshRedistribution
   {
@@ -41,11 +50,23 @@ namespace FluidSurface
       return relaxation_time / tau;
     }
 
-    /// Kinematics (1/τ)(Y·ñ, φ)_h − (u·ñ, φ)_h = (1/τ)(X^m·ñ, φ)_h: the rows of κ, the columns of Y and u.
+    /// The mesh laws of `law`.
+    enum class Law
+    {
+      bgn,
+      reference
+    };
+
+    /**
+     * Kinematics (1/τ)(Y·ñ, φ)_h − (u·ñ, φ)_h = (1/τ)(W·ñ, φ)_h with W = @p start at the point: X^m (law bgn),
+     * or Z − τR (law reference: the exact rigid carry minus its linearization, so that a rigid velocity moves
+     * the nodes by the rotation itself). The rows of κ, the columns of Y and u.
+     */
     void
     assemble_kinematics(const NodalPointValues   &point,
                         const DofLayout          &dofs,
                         const double              tau,
+                        const dealii::Point<3>   &start,
                         dealii::FullMatrix<double> &matrix,
                         dealii::Vector<double>     &rhs) const;
 
@@ -56,19 +77,56 @@ namespace FluidSurface
                                dealii::FullMatrix<double> &matrix) const;
 
     /**
-     * Redistribution, the nodal part (κñ, η)_h + (T_r/τ)(P̃Y, η)_h = (T_r/τ)(P̃(X^m + τR), η)_h, P̃ = I − ññ,
-     * with the rigid motion R = @p rigid_velocity at the point (0 unless `follow rigid motion`): the rows of
-     * Y, the columns of κ and Y.
+     * Redistribution, the nodal part (κñ, η)_h + (T_r/τ)(P̃Y, η)_h = (T_r/τ)(P̃W, η)_h, P̃ = I − ññ, with the
+     * damping target W = @p target at the point: X^m + τR (law bgn) or the carried position Z (law
+     * reference). The rows of Y, the columns of κ and Y.
      */
     void
     assemble_nodal_terms(const NodalPointValues     &point,
                          const DofLayout            &dofs,
                          const double                tau,
-                         const dealii::Tensor<1, 3> &rigid_velocity,
+                         const dealii::Point<3>     &target,
                          dealii::FullMatrix<double>  &matrix,
                          dealii::Vector<double>      &rhs) const;
 
+    /**
+     * Law reference, the membrane energy at a Gauss point of S^m, linearized about the carried surface
+     * Z = Q X^m + const: with G₀ = ∇_{S^m}X₀ (@p reference_gradient), M = G₀ᵀG₀, J_m = det₂(M)^{−1/2} (area of
+     * S^m over S₀) and A = (tr M P − M)/√det₂ M (= b_m/J_m, b_m the left Cauchy–Green tensor of S₀ → S^m),
+     *
+     *   μ[(∇Y A, ∇η) − (Q, ∇η)] + K s[(s J_m (Q:∇Y) (Q:∇η)) − ((s J_m + 1) Q:∇η)],
+     *
+     * Q:∇η = div_{S^m}(Qᵀη), s = A₀/A^m (@p area_scale, so that J averages 1). Both parts vanish at Y = Z when
+     * S^m is a rigid image of S₀. Adds to @p matrix and @p rhs in the rows of Y; they are tested with tangential
+     * η only (project_position_rows()).
+     */
+    void
+    assemble_reference_terms(const SurfacePointValues   &point,
+                             const dealii::Tensor<2, 3> &reference_gradient,
+                             const dealii::Tensor<2, 3> &rotation,
+                             const double                area_scale,
+                             const DofLayout            &dofs,
+                             dealii::FullMatrix<double>  &matrix,
+                             dealii::Vector<double>      &rhs) const;
+
+    /**
+     * Law reference: the rows of Y at each node n become ñ_nñ_nᵀ (the rows of @p normal_rows: (∇_S Y, ∇_S η),
+     * which define κ) plus P̃_n (the rows of @p tangential_rows and @p tangential_rhs: the membrane energy), added
+     * to @p matrix and @p rhs. @p node_normals[n] is ñ^m at node n.
+     */
+    static void
+    project_position_rows(const std::vector<dealii::Tensor<1, 3>> &node_normals,
+                          const DofLayout                          &dofs,
+                          const dealii::FullMatrix<double>         &normal_rows,
+                          const dealii::FullMatrix<double>         &tangential_rows,
+                          const dealii::Vector<double>             &tangential_rhs,
+                          dealii::FullMatrix<double>               &matrix,
+                          dealii::Vector<double>                   &rhs);
+
     // The entries of `subsection mesh redistribution`, set by parse_parameters().
+    Law    law{};                 ///< the tangential mesh law
+    double shear_stiffness{};     ///< μ of law reference
+    double area_stiffness{};      ///< K of law reference
     bool   lumped{};              ///< (·,·)_h by the nodal quadrature
     double relaxation_time{};     ///< T_r of the tangential damping (0: plain BGN)
     bool   follow_rigid_motion{}; ///< the damping relaxes towards X^m + τR instead of X^m
