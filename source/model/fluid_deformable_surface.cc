@@ -5,6 +5,7 @@
 #include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/data_postprocessor.h>
@@ -20,6 +21,7 @@
 #include <fluid_surface/model/fluid_deformable_surface.h>
 
 #include <cmath>
+#include <limits>
 
 namespace FluidSurface
 {
@@ -518,7 +520,7 @@ namespace FluidSurface
                      scratch.smooth_normal_gradient[q],
                      scratch.old_velocity[q],
                      scratch.old_velocity_gradient[q]);
-        assemble_flow_terms(point, tau, area_rate, local);
+        assemble_flow_terms(point, tau, area_rate, carried, local);
         if (prescribed_velocity == nullptr)
           bending.assemble_force(point, *layout, local.matrix);
         bending.assemble_bending_scalar(point, *layout, local.matrix);
@@ -588,6 +590,7 @@ namespace FluidSurface
   FluidDeformableSurface::assemble_flow_terms(const SurfacePointValues &point,
                                               const double              tau,
                                               const double              area_rate,
+                                              const RigidMotion        &carried,
                                               LocalSystem              &local) const
   {
     const FlowPointValues &p       = point.flow;
@@ -612,16 +615,26 @@ namespace FluidSurface
       }
     // The mass term: the inertia (1/τ)(u, v), or the Stokes limit's regularization ε(u, v).
     const double mass = flow.inertia ? inv_tau : momentum_constraints.regularization();
+    // Law reference carries the nodes by the rigid motion R (Z = carry of X^m): the nodal velocities turn with
+    // them (Q u^m, Ω × u), and the mesh velocity in the convection is R + (Y − Z)/τ, i.e. W = Z − τR.
+    const bool         carried_frame = redistribution.law == MeshRedistribution::Law::reference;
+    const Tensor<2, 3> rotation      = carried.rotation_over(tau);
+    const Point<3>     start = carried_frame ? carried.carry(p.position, tau) - tau * carried.value(p.position) :
+                                               p.position;
     for (const unsigned int i : layout->velocity)
       {
         if (flow.inertia)
-          local.rhs(i) += SurfaceFluid::mass_term_rhs(p, i, inv_tau) * dA;
+          local.rhs(i) += (carried_frame ? SurfaceFluid::carried_mass_term_rhs(p, i, inv_tau, rotation) :
+                                           SurfaceFluid::mass_term_rhs(p, i, inv_tau)) *
+                          dA;
         if (flow.convection)
-          local.rhs(i) += SurfaceFluid::mesh_motion_term_rhs(p, i, inv_tau) * dA;
+          local.rhs(i) += SurfaceFluid::mesh_motion_term_rhs(p, i, inv_tau, start) * dA;
         for (const unsigned int j : layout->velocity)
           {
             double a = flow.viscous_term(p, i, j);
             a += SurfaceFluid::mass_term(p, i, j, mass);
+            if (carried_frame && flow.inertia)
+              a += SurfaceFluid::frame_rotation_term(p, i, j, carried.rotation);
             // (∇_w u, v) with w = u^m, consistent (not skew-symmetrized; doc/scheme.md).
             if (flow.convection)
               a += SurfaceFluid::convection_term(p, i, j);
@@ -761,29 +774,39 @@ namespace FluidSurface
     for (unsigned int j = 0; j < 6; ++j)
       rhs(j) = sums[6 + j];
     const double cutoff = redistribution.rigid_motion_cutoff * m.area;
-    FullMatrix<double> normal_matrix(6, 6), inverse(6, 6);
-    for (unsigned int j = 0; j < 6; ++j)
-      for (unsigned int l = 0; l < 6; ++l)
-        normal_matrix(j, l) = sums[12 + 6 * j + l] + (j == l ? cutoff : 0.0);
-    inverse.invert(normal_matrix);
-    inverse.vmult(coefficients, rhs);
     if (redistribution.law == MeshRedistribution::Law::reference)
       {
-        // Iterated Tikhonov: c ← c + (G + ε)⁻¹(b − G c), 11 more times, filters each mode of the Gram matrix G by
-        // 1 − (ε/(λ + ε))¹²: motions with λ ≥ 20ε (a tumbling body) are fitted to round-off, so that a rigid
-        // velocity is followed exactly, and those with λ ≪ ε (the spin of an axisymmetric body) are dropped.
-        Vector<double> residual(6), update(6);
-        for (unsigned int iteration = 0; iteration < 11; ++iteration)
+        // A spectral cutoff of the Gram matrix G instead: the motions with ∫(R·ν)² ≥ 2ε|S| per unit coefficient
+        // are fitted exactly (a rigid velocity is followed to round-off), those below ε|S| not at all (the spin
+        // of an axisymmetric body), with a smooth step between.
+        LAPACKFullMatrix<double> gram(6, 6);
+        for (unsigned int j = 0; j < 6; ++j)
+          for (unsigned int l = 0; l < 6; ++l)
+            gram(j, l) = sums[12 + 6 * j + l];
+        FullMatrix<double> eigenvectors(6, 6); // the columns
+        Vector<double>     eigenvalues(6);
+        gram.compute_eigenvalues_symmetric(-1.0, std::numeric_limits<double>::max(), 0.0, eigenvalues, eigenvectors);
+        for (unsigned int k = 0; k < eigenvalues.size(); ++k)
           {
+            const double ratio  = std::min(1.0, std::max(0.0, eigenvalues(k) / cutoff - 1.0));
+            const double filter = ratio * ratio * (3.0 - 2.0 * ratio);
+            if (filter == 0)
+              continue;
+            double projection = 0;
             for (unsigned int j = 0; j < 6; ++j)
-              {
-                residual(j) = rhs(j);
-                for (unsigned int l = 0; l < 6; ++l)
-                  residual(j) -= sums[12 + 6 * j + l] * coefficients(l);
-              }
-            inverse.vmult(update, residual);
-            coefficients += update;
+              projection += eigenvectors(j, k) * rhs(j);
+            for (unsigned int j = 0; j < 6; ++j)
+              coefficients(j) += filter * projection / eigenvalues(k) * eigenvectors(j, k);
           }
+      }
+    else
+      {
+        FullMatrix<double> normal_matrix(6, 6), inverse(6, 6);
+        for (unsigned int j = 0; j < 6; ++j)
+          for (unsigned int l = 0; l < 6; ++l)
+            normal_matrix(j, l) = sums[12 + 6 * j + l] + (j == l ? cutoff : 0.0);
+        inverse.invert(normal_matrix);
+        inverse.vmult(coefficients, rhs);
       }
     for (unsigned int d = 0; d < 3; ++d)
       {

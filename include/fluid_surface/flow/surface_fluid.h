@@ -80,11 +80,35 @@ namespace FluidSurface
       return -(inverse_tau * ((point.old_velocity_gradient * new_position) * point.velocity[i]));
     }
 
-    /// The mesh motion in the convection, its right-hand side −(1/τ)(G^m X^m, v) (X^m: point.position).
+    /// The mesh motion in the convection, its right-hand side −(1/τ)(G^m W, v) with the start W of the mesh
+    /// motion: X^m (point.position), or Z − τR when the nodes are carried by the rigid motion R (doc/scheme.md).
     static double
-    mesh_motion_term_rhs(const FlowPointValues &point, const unsigned int i, const double inverse_tau)
+    mesh_motion_term_rhs(const FlowPointValues   &point,
+                         const unsigned int       i,
+                         const double             inverse_tau,
+                         const dealii::Point<3>  &start)
     {
-      return -(inverse_tau * ((point.old_velocity_gradient * point.position) * point.velocity[i]));
+      return -(inverse_tau * ((point.old_velocity_gradient * start) * point.velocity[i]));
+    }
+
+    /**
+     * Inertia in the frame carried by the rigid rotation Q = exp(τ[Ω]×) of the nodes: (1/τ)(u − Q u^m, v) +
+     * (Ω × u, v), exact for a velocity that rotates with the nodes (the nodal vectors turn with the body instead
+     * of lagging by backward Euler's phase error). The right-hand side c(Q u^m, v), c = 1/τ.
+     */
+    static double
+    carried_mass_term_rhs(const FlowPointValues &point, const unsigned int i, const double c,
+                          const dealii::Tensor<2, 3> &rotation)
+    {
+      return c * ((rotation * point.old_velocity) * point.velocity[i]);
+    }
+
+    /// The frame-rotation part (Ω × u, v) of the carried inertia (carried_mass_term_rhs()).
+    static double
+    frame_rotation_term(const FlowPointValues &point, const unsigned int i, const unsigned int j,
+                        const dealii::Tensor<1, 3> &omega)
+    {
+      return dealii::cross_product_3d(omega, point.velocity[j]) * point.velocity[i];
     }
 
     /// Pressure −(p, div_P v).

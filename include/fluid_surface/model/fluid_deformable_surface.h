@@ -258,11 +258,14 @@ namespace FluidSurface
      * The momentum and continuity rows at one Gauss point, the terms of SurfaceFluid:
      * (1/τ)(u − u^m, v) + (G u^m, v) − (1/τ)(G^m (Y − X^m), v) + (2/Re)(σ(u), σ(v)) − (p, div_P v) (in the
      * Stokes limit ε(u, v) instead of the inertia, no convection) and −(div_P u, q) = −(s, q), s = @p area_rate.
+     * With law reference in the frame carried by the rigid motion @p carried: (1/τ)(u − Q u^m, v) + (Ω × u, v)
+     * and the mesh velocity R + (Y − Z)/τ.
      */
     void
     assemble_flow_terms(const SurfacePointValues &point,
                         const double              tau,
                         const double              area_rate,
+                        const RigidMotion        &carried,
                         LocalSystem              &local) const;
     /// Y of @p flow_solution → the geometry's position field.
     void
