@@ -241,6 +241,36 @@ namespace FluidSurface
     current.reinit(owned, relevant, geometry.get_communicator());
     candidate.reinit(owned, relevant, geometry.get_communicator());
 
+    // The nodes of u and Y: the three DoFs of each (for the carried frame of law reference).
+    velocity_nodes.clear();
+    new_position_nodes.clear();
+    {
+      std::vector<types::global_dof_index> indices(fe->n_dofs_per_cell());
+      std::vector<bool>                    listed(owned.n_elements(), false);
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(indices);
+            for (const unsigned int i : layout->velocity)
+              if (fe->system_to_component_index(i).first == velocity_component && owned.is_element(indices[i]) &&
+                  !listed[owned.index_within_set(indices[i])])
+                {
+                  listed[owned.index_within_set(indices[i])] = true;
+                  std::array<types::global_dof_index, 3> node;
+                  for (const unsigned int j : layout->velocity)
+                    if (fe->system_to_component_index(j).second == fe->system_to_component_index(i).second)
+                      node[fe->system_to_component_index(j).first - velocity_component] = indices[j];
+                  velocity_nodes.push_back(node);
+                }
+            for (const auto &rows : layout->new_position_nodes)
+              if (owned.is_element(indices[rows[0]]) && !listed[owned.index_within_set(indices[rows[0]])])
+                {
+                  listed[owned.index_within_set(indices[rows[0]])] = true;
+                  new_position_nodes.push_back({{indices[rows[0]], indices[rows[1]], indices[rows[2]]}});
+                }
+          }
+    }
+
     // Y_d and X_d share the nodes of Q_k: pair their DoFs cell by cell.
     position_pairs.clear();
     const FiniteElement<2, 3>           &gfe = geometry.fe();
@@ -301,6 +331,31 @@ namespace FluidSurface
     copy_position_into(initial_position, reference);
     reference_position.reinit(owned, relevant, geometry.get_communicator());
     reference_position = reference;
+  }
+
+  void
+  FluidDeformableSurface::leave_carried_frame(const RigidMotion &carried, const double tau, VectorType &solution) const
+  {
+    const Tensor<2, 3> Q = carried.rotation_over(tau);
+    for (const auto &node : velocity_nodes)
+      {
+        Tensor<1, 3> u;
+        for (unsigned int d = 0; d < 3; ++d)
+          u[d] = solution[node[d]];
+        u = Q * u;
+        for (unsigned int d = 0; d < 3; ++d)
+          solution[node[d]] = u[d];
+      }
+    for (const auto &node : new_position_nodes)
+      {
+        Point<3> y;
+        for (unsigned int d = 0; d < 3; ++d)
+          y[d] = solution[node[d]];
+        y = carried.carry(y, tau);
+        for (unsigned int d = 0; d < 3; ++d)
+          solution[node[d]] = y[d];
+      }
+    solution.compress(VectorOperation::insert);
   }
 
   void
@@ -492,7 +547,7 @@ namespace FluidSurface
     const bool reference_law = redistribution.law == MeshRedistribution::Law::reference;
     // Law reference: (∇_S Y, ∇_S η) only defines κ (normal rows), the membrane energy moves the nodes
     // tangentially, and both are projected at the nodes after the nodal loop.
-    const Tensor<2, 3> rotation = carried.rotation_over(tau);
+    const Tensor<2, 3> rotation = unit_symmetric_tensor<3>(); // the carried frame: Z = X^m
     if (reference_law)
       {
         scratch.normal_rows.reinit(fe->n_dofs_per_cell(), fe->n_dofs_per_cell());
@@ -560,10 +615,10 @@ namespace FluidSurface
         const Point<3> &x = nodal.position;
         if (reference_law)
           {
-            const Point<3> carried_position = carried.carry(x, tau);
+            // In the carried frame: Ỹ·ñ = X^m·ñ + τ(ũ − R)·ñ, damped towards X^m.
             redistribution.assemble_kinematics(
-              nodal, *layout, tau, carried_position - tau * carried.value(x), local.matrix, local.rhs);
-            redistribution.assemble_nodal_terms(nodal, *layout, tau, carried_position, local.matrix, local.rhs);
+              nodal, *layout, tau, x - tau * carried.value(x), local.matrix, local.rhs);
+            redistribution.assemble_nodal_terms(nodal, *layout, tau, x, local.matrix, local.rhs);
             // The nodal rule's points are the nodes: the node whose shape function is 1 here.
             for (unsigned int n = 0; n < layout->new_position_nodes.size(); ++n)
               if (std::abs(nodal.new_position[layout->new_position_nodes[n][0]][0] - 1.0) < 1e-8)
@@ -599,9 +654,12 @@ namespace FluidSurface
     if (prescribed_velocity != nullptr)
       {
         // (u, v) = (u_prescribed, v) and (p, q) = 0: the L² projection of the prescribed velocity.
-        Tensor<1, 3> u;
+        // In the carried frame: Qᵀ u_prescribed at the carried point.
+        const Point<3> y = carried.carry(p.position, tau);
+        Tensor<1, 3>   u;
         for (unsigned int d = 0; d < 3; ++d)
-          u[d] = prescribed_velocity->value(p.position, d);
+          u[d] = prescribed_velocity->value(y, d);
+        u = transpose(carried.rotation_over(tau)) * u;
         for (const unsigned int i : layout->velocity)
           {
             local.rhs(i) += (u * p.velocity[i]) * dA;
@@ -615,18 +673,15 @@ namespace FluidSurface
       }
     // The mass term: the inertia (1/τ)(u, v), or the Stokes limit's regularization ε(u, v).
     const double mass = flow.inertia ? inv_tau : momentum_constraints.regularization();
-    // Law reference carries the nodes by the rigid motion R (Z = carry of X^m): the nodal velocities turn with
-    // them (Q u^m, Ω × u), and the mesh velocity in the convection is R + (Y − Z)/τ, i.e. W = Z − τR.
-    const bool         carried_frame = redistribution.law == MeshRedistribution::Law::reference;
-    const Tensor<2, 3> rotation      = carried.rotation_over(tau);
-    const Point<3>     start = carried_frame ? carried.carry(p.position, tau) - tau * carried.value(p.position) :
-                                               p.position;
+    // Law reference solves the step in the frame carried by the rigid motion R of the shape (ũ = Qᵀu, the new
+    // position relative to the carry; advance() maps back): the frame's rotation adds (Ω × ũ, v), and the mesh
+    // velocity in the convection is R + (Ỹ − X^m)/τ, i.e. W = X^m − τR.
+    const bool     carried_frame = redistribution.law == MeshRedistribution::Law::reference;
+    const Point<3> start         = carried_frame ? p.position - tau * carried.value(p.position) : p.position;
     for (const unsigned int i : layout->velocity)
       {
         if (flow.inertia)
-          local.rhs(i) += (carried_frame ? SurfaceFluid::carried_mass_term_rhs(p, i, inv_tau, rotation) :
-                                           SurfaceFluid::mass_term_rhs(p, i, inv_tau)) *
-                          dA;
+          local.rhs(i) += SurfaceFluid::mass_term_rhs(p, i, inv_tau) * dA;
         if (flow.convection)
           local.rhs(i) += SurfaceFluid::mesh_motion_term_rhs(p, i, inv_tau, start) * dA;
         for (const unsigned int j : layout->velocity)
@@ -827,6 +882,9 @@ namespace FluidSurface
        (redistribution.relaxation_time > 0 || redistribution.law == MeshRedistribution::Law::reference)) ||
       (rigid_constraints() && flow.inertia);
     const RigidMotion motion      = need_motion ? rigid_motion(current) : RigidMotion();
+    // Law reference solves the step in the frame carried by the rigid motion of the shape (assemble_cell()).
+    const bool carried_frame = redistribution.law == MeshRedistribution::Law::reference &&
+                               redistribution.follow_rigid_motion;
     {
       TimerSection section(step_timer, "assembly");
       assemble(tau, motion);
@@ -852,12 +910,32 @@ namespace FluidSurface
         const std::array<double, 6> old_momenta =
           flow.inertia ? motion.momenta : std::array<double, 6>{{0, 0, 0, 0, 0, 0}};
         const double fraction = flow.inertia ? std::min(1.0, tau / drift_time(tau)) : 1.0;
+        std::array<double, 6> targets;
+        for (unsigned int k = 0; k < 6; ++k)
+          targets[k] = old_momenta[k] + fraction * (rigid_targets[k] - old_momenta[k]);
+        if (carried_frame)
+          {
+            // In the carried frame (Y = QỸ + c, u = Qũ): P̃ = QᵀP, L̃ = Qᵀ(L − c × P).
+            const Tensor<2, 3> Q = motion.rotation_over(tau);
+            const Tensor<1, 3> c = motion.carry(Point<3>(), tau);
+            Tensor<1, 3>       P, L;
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                P[d] = targets[d];
+                L[d] = targets[3 + d];
+              }
+            const Tensor<1, 3> P_frame = transpose(Q) * P, L_frame = transpose(Q) * (L - cross_product_3d(c, P));
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                targets[d]     = P_frame[d];
+                targets[3 + d] = L_frame[d];
+              }
+          }
         for (unsigned int k = 0; k < rigid_columns.size(); ++k)
           {
-            const double target = old_momenta[k] + fraction * (rigid_targets[k] - old_momenta[k]);
             columns.push_back(&rigid_columns[k]);
             rows.push_back(&rigid_rows[k]);
-            rates.push_back(target + (k < 3 ? 2.0 : 3.0) * old_momenta[k]);
+            rates.push_back(targets[k] + (k < 3 ? 2.0 : 3.0) * old_momenta[k]);
           }
       }
 
@@ -900,8 +978,13 @@ namespace FluidSurface
     candidate = x1;
     {
       TimerSection section(step_timer, "diagnostics");
-      result.dissipation_rate = dissipation_rate(candidate);
+      result.dissipation_rate = dissipation_rate(candidate); // of ũ on S^m, that of u on the carried surface
     }
+    if (carried_frame)
+      {
+        leave_carried_frame(motion, tau, x1);
+        candidate = x1;
+      }
     copy_new_position_to_geometry(candidate);
     if (conservation.enabled && prescribed_velocity == nullptr)
       {

@@ -12,10 +12,11 @@ namespace FluidSurface
   {
     prm.enter_subsection("mesh redistribution");
     prm.declare_entry("law",
-                      "bgn",
+                      "reference",
                       Patterns::Selection("bgn|reference"),
-                      "The tangential motion of the nodes. bgn: the tangential part of κñ = Δ_S Y (a conformal "
-                      "parametrization of the current surface, Barrett–Garcke–Nürnberg), damped towards X^m + τR. "
+                      "The tangential motion of the nodes. bgn (the earlier default): the tangential part of "
+                      "κñ = Δ_S Y (a conformal parametrization of the current surface, Barrett–Garcke–Nürnberg), "
+                      "damped towards X^m + τR. "
                       "reference: the nodes are carried by the exact rigid motion of the shape (a rotation, not its "
                       "linearization) and relax on the time scale T_r towards a minimizer of a membrane energy "
                       "relative to the initial surface S₀ (shear stiffness μ, area stiffness K): a rigid motion "

@@ -92,18 +92,10 @@ namespace FluidSurface
     }
 
     /**
-     * Inertia in the frame carried by the rigid rotation Q = exp(τ[Ω]×) of the nodes: (1/τ)(u − Q u^m, v) +
-     * (Ω × u, v), exact for a velocity that rotates with the nodes (the nodal vectors turn with the body instead
-     * of lagging by backward Euler's phase error). The right-hand side c(Q u^m, v), c = 1/τ.
+     * The inertia of a step solved in a frame that turns with the angular velocity Ω (the carried frame of the
+     * mesh law `reference`): with u = Qũ and v = Qṽ, (1/τ)(u − Q u^m, v) = (1/τ)(ũ − u^m, ṽ) and the frame adds
+     * (Ω × ũ, ṽ). Exact when the velocity turns with the body.
      */
-    static double
-    carried_mass_term_rhs(const FlowPointValues &point, const unsigned int i, const double c,
-                          const dealii::Tensor<2, 3> &rotation)
-    {
-      return c * ((rotation * point.old_velocity) * point.velocity[i]);
-    }
-
-    /// The frame-rotation part (Ω × u, v) of the carried inertia (carried_mass_term_rhs()).
     static double
     frame_rotation_term(const FlowPointValues &point, const unsigned int i, const unsigned int j,
                         const dealii::Tensor<1, 3> &omega)

@@ -325,6 +325,11 @@ namespace FluidSurface
     VectorType                             reference_position;
     /// The velocity of a prescribed motion (set_prescribed_velocity()), or none.
     const dealii::Function<3>             *prescribed_velocity = nullptr;
+    /// The flow DoFs (components 0–2) of the locally owned nodes of u and of Y.
+    std::vector<std::array<dealii::types::global_dof_index, 3>> velocity_nodes, new_position_nodes;
+    /// Law reference: maps the solution of a step in the carried frame back (u = Qũ, Y = the carry of Ỹ).
+    void
+    leave_carried_frame(const RigidMotion &carried, const double tau, VectorType &solution) const;
     /// (flow DoF of Y_d, geometry DoF of X_d) for the locally owned nodes.
     std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>> position_pairs;
     double                                 last_tau = 0;     ///< τ of the step that produced X^m
