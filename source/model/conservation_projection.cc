@@ -82,12 +82,16 @@ namespace FluidSurface
         // κ = Hν is the weak Δ_S X (H < 0 on an outward sphere), so dA = −∫Hδ·ν.
         const double dV_da = sums[0], dV_db = sums[1], dA_da = -sums[1], dA_db = -sums[3];
         double       a = 0, b = 0;
-        if (hold_volume)
+        // On a sphere (H constant) the two modes change A and V alike: the 2 × 2 system is singular, and only
+        // V is held (A is then at its minimum for V, and its drift of second order).
+        const double det = dV_da * dA_db - dV_db * dA_da;
+        if (hold_volume && std::abs(det) > 1e-8 * std::abs(dV_da * dA_db))
           {
-            const double det = dV_da * dA_db - dV_db * dA_da;
-            a                = -(dA_db * volume_error - dV_db * area_error) / det;
-            b                = -(-dA_da * volume_error + dV_da * area_error) / det;
+            a = -(dA_db * volume_error - dV_db * area_error) / det;
+            b = -(-dA_da * volume_error + dV_da * area_error) / det;
           }
+        else if (hold_volume)
+          a = -volume_error / dV_da;
         else
           a = -area_error / dA_da;
         VectorType position(owned, comm);

@@ -750,14 +750,20 @@ namespace FluidSurface
   Point<3>
   FluidDeformableSurface::RigidMotion::carry(const Point<3> &x, const double tau) const
   {
-    const double omega_squared = rotation.norm_square();
-    if (omega_squared == 0)
+    // The flow of R = U + Ω × (x − x_c) over τ: x_c + Q(x − x_c) + ∫₀^τ Q(s) ds U, with
+    // ∫₀^τ Q(s) ds = τ[I + (1 − cos θ)/θ [ê]× + (1 − sin θ/θ)[ê]×²], θ = τ|Ω| (series for small θ).
+    const double omega = rotation.norm();
+    if (omega == 0)
       return x + tau * translation;
-    // R = U_∥ + Ω × (x − p), a screw motion about the axis through p = x_c + Ω × U_⊥/|Ω|²; its flow over τ.
-    const Tensor<1, 3> along  = (translation * rotation) / omega_squared * rotation;
-    const Point<3>     pivot  = centre + cross_product_3d(rotation, translation - along) / omega_squared;
-    return pivot + rotation_over(tau) * (x - pivot) + tau * along;
+    const Tensor<1, 3> axis  = rotation / omega;
+    const double       theta = tau * omega;
+    const double       c1 = theta < 1e-6 ? theta / 2 : (1.0 - std::cos(theta)) / theta;
+    const double       c2 = theta < 1e-6 ? theta * theta / 6 : 1.0 - std::sin(theta) / theta;
+    const Tensor<1, 3> turned  = cross_product_3d(axis, translation);
+    const Tensor<1, 3> shifted = tau * (translation + c1 * turned + c2 * cross_product_3d(axis, turned));
+    return centre + rotation_over(tau) * (x - centre) + shifted;
   }
+
 
   FluidDeformableSurface::RigidMotion
   FluidDeformableSurface::rigid_motion(const VectorType &state) const

@@ -222,8 +222,8 @@ namespace FluidSurface
       /// Q = exp(τ[Ω]×), the rotation by the angle τ|Ω| about Ω (Rodrigues' formula).
       dealii::Tensor<2, 3>
       rotation_over(const double tau) const;
-      /// The exact flow of the (stationary) rigid velocity R over a step @p tau, applied to @p x: the screw
-      /// motion p + Q(x − p) + τU_∥ about the axis of R (U_∥ the part of U along Ω), Q = rotation_over(τ).
+      /// The exact flow of the (stationary) rigid velocity R over a step @p tau, applied to @p x (a screw
+      /// motion), Q = rotation_over(τ).
       dealii::Point<3>
       carry(const dealii::Point<3> &x, const double tau) const;
     };
