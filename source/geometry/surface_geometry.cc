@@ -17,6 +17,7 @@
 #include <fluid_surface/geometry/exact_geometry.h>
 #include <fluid_surface/geometry/surface_geometry.h>
 #include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/io/run_stopped.h>
 
 #include <algorithm>
 #include <cmath>
@@ -152,11 +153,12 @@ namespace FluidSurface
       }
     catch (const ExceptionBase &exc)
       {
-        std::ostringstream msg;
-        exc.print_info(msg);
-        throw InputError(mesh_file + ": cannot read the gmsh mesh (expected an ASCII msh 2.2/4.1 file of "
-                                     "quadrilaterals): " +
-                         msg.str());
+        std::string reader = one_line_message(exc, 200);
+        if (!reader.empty() && reader.back() == '.')
+          reader.pop_back();
+        throw_invalid_entry("geometry/mesh file",
+                            mesh_file,
+                            "an ASCII gmsh mesh (msh 2.2 or 4.1) of quadrilaterals; the reader says: " + reader);
       }
     if (!coarse.all_reference_cells_are_hyper_cube())
       throw InputError(mesh_file + ": the mesh has triangles; expected an all-quadrilateral surface mesh "
