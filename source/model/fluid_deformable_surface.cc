@@ -42,8 +42,9 @@ namespace FluidSurface
     prm.enter_subsection("initial state");
     prm.declare_entry("angular velocity",
                       "0",
-                      RealRange::closed(-1e3, 1e3),
-                      "ω₀, |ω₀| ≤ 1000, of the initial rigid rotation u₀ = ω₀ e × (x − c).");
+                      RealRange::closed(-100, 100),
+                      "ω₀, |ω₀| ≤ 100, of the initial rigid rotation u₀ = ω₀ e × (x − c). (Velocities are scaled with "
+                      "U; faster initial states only shrink τ until the run no longer finishes.)");
     prm.declare_entry("equilibrium rotation",
                       "false",
                       Patterns::Bool(),
@@ -56,16 +57,16 @@ namespace FluidSurface
                       "Axis e: three finite numbers, not all 0 (normalized).");
     prm.declare_entry("rotation centre",
                       "0, 0, 0",
-                      Patterns::List(RealRange::closed(-1e3, 1e3), 3, 3),
-                      "Centre c: three numbers, each |c_i| ≤ 1000.");
+                      Patterns::List(RealRange::closed(-100, 100), 3, 3),
+                      "Centre c: three numbers, each |c_i| ≤ 100.");
     prm.declare_entry("translation velocity",
                       "0, 0, 0",
-                      Patterns::List(RealRange::closed(-1e3, 1e3), 3, 3),
-                      "Uniform velocity U added to u₀ (a rigid translation): three numbers, each |U_i| ≤ 1000.");
+                      Patterns::List(RealRange::closed(-100, 100), 3, 3),
+                      "Uniform velocity U added to u₀ (a rigid translation): three numbers, each |U_i| ≤ 100.");
     prm.declare_entry("velocity perturbation",
                       "0",
-                      RealRange::closed(0, 1e3),
-                      "Amplitude ε_u, 0 ≤ ε_u ≤ 1000, of a smooth seeded random velocity field added to u₀.");
+                      RealRange::closed(0, 100),
+                      "Amplitude ε_u, 0 ≤ ε_u ≤ 100, of a smooth seeded random velocity field added to u₀.");
     prm.declare_entry("shape perturbation",
                       "0",
                       RealRange::closed(0, 1),

@@ -256,8 +256,8 @@ namespace FluidSurface
                       "Degree l, 2 ≤ l ≤ 10, of the zonal spherical harmonic Y_l⁰ of the decaying mode curl_S Y_l⁰.");
     prm.declare_entry("angular velocity",
                       "1",
-                      RealRange::closed(-1e3, 1e3),
-                      "ω, |ω| ≤ 1000, of the Killing field u = ω e_z × x.");
+                      RealRange::closed(-100, 100),
+                      "ω, |ω| ≤ 100, of the Killing field u = ω e_z × x.");
     prm.leave_subsection();
     // `time stepping` (end time, time step) is TimeStepper's, `flow` SurfaceFluid's and `fixed surface
     // solver` SurfaceFlow's; the Simulation declares each once.

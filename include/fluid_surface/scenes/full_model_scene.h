@@ -98,7 +98,7 @@ namespace FluidSurface
      */
     void
     write_summary(const std::string &status) const;
-    /// The summary of a run that stops before its end time because of @p reason (never throws).
+    /// The summary of a run that stops before its end time because of @p reason (rank 0, never throws).
     void
     write_summary_of_stopped_run(const std::string &reason);
     /// Appends @p text to `error.log` in the output directory (rank 0).
