@@ -48,7 +48,7 @@ namespace FluidSurface
     prm.declare_entry("multiplier degree",
                       "1",
                       Patterns::Integer(1, 2),
-                      "Degree d of the tangentiality multiplier λ ∈ Q_d (tangentiality = multiplier).");
+                      "Degree d, 1 or 2, of the tangentiality multiplier λ ∈ Q_d (tangentiality = multiplier).");
     prm.declare_entry("penalty normal",
                       "exact",
                       Patterns::Selection("exact|continuous|cell"),
@@ -57,12 +57,12 @@ namespace FluidSurface
                       "of ν_h), or the cell normal ν_h.");
     prm.declare_entry("penalty factor",
                       "10",
-                      Patterns::Double(0),
-                      "β of the tangentiality penalty η = β h_K^{−q}, h_K = |K|^{1/2}.");
+                      RealRange::closed(1e-6, 1e6),
+                      "β, 1e-6 ≤ β ≤ 1e6, of the tangentiality penalty η = β h_K^{−q}, h_K = |K|^{1/2}.");
     prm.declare_entry("penalty exponent",
                       "3",
-                      Patterns::Double(0, 6),
-                      "q of the tangentiality penalty η = β h_K^{−q}.");
+                      RealRange::closed(0, 6),
+                      "q, 0 ≤ q ≤ 6, of the tangentiality penalty η = β h_K^{−q}.");
     prm.declare_entry("linear solver",
                       "direct",
                       Patterns::Selection("direct|block preconditioned"),
@@ -78,8 +78,8 @@ namespace FluidSurface
                       "Schur complement approximation).");
     prm.declare_entry("velocity AMG aggregation threshold",
                       "1e-4",
-                      Patterns::Double(0, 1),
-                      "ML aggregation threshold θ of the velocity AMG (connections weaker than θ are dropped "
+                      RealRange::closed(0, 1),
+                      "ML aggregation threshold θ, 0 ≤ θ ≤ 1, of the velocity AMG (connections weaker than θ are dropped "
                       "when aggregating). Stationary sphere problem, Cartesian components, GMRES iterations at "
                       "refinements 3–5: 35, 58, 139 with θ = 0.02; 30, 44, 46 with θ = 1e-4 "
                       "(benchmarks/surface_stokes).");
@@ -103,8 +103,8 @@ namespace FluidSurface
                       "29, 26, 31, 33 in node frames (benchmarks/surface_stokes).");
     prm.declare_entry("max linear iterations",
                       "1000",
-                      Patterns::Integer(1),
-                      "Maximum number of Krylov iterations of one solve.");
+                      Patterns::Integer(1, 100000),
+                      "Maximum number of Krylov iterations of one solve, 1 to 100000.");
     prm.leave_subsection();
   }
 
@@ -130,8 +130,6 @@ namespace FluidSurface
                                                               VelocityAMGOperator::low_order_refined;
     velocity_amg_node_frames = prm.get_bool("velocity AMG node frames");
     max_linear_iterations = prm.get_integer("max linear iterations");
-    if (!(penalty_factor > 0))
-      throw_invalid_entry("fixed surface solver/penalty factor", prm.get("penalty factor"), "a positive β");
     if (tangentiality == Tangentiality::multiplier && solver != LinearSolver::direct)
       throw_invalid_entry("fixed surface solver/tangentiality",
                           "multiplier",

@@ -11,8 +11,9 @@ namespace FluidSurface
     prm.enter_subsection("flow");
     prm.declare_entry("Re",
                       "1",
-                      Patterns::Double(0, Patterns::Double::max_double_value),
-                      "Reynolds number Re = ρUL/μ; the viscous stress is (2/Re)σ(u).");
+                      RealRange::closed(1e-6, 1e6),
+                      "Reynolds number Re = ρUL/μ, 1e-6 ≤ Re ≤ 1e6; the viscous stress is (2/Re)σ(u). (The model is "
+                      "scaled with U and L of order 1; for Re → 0 use inertia = false, the Stokes limit.)");
     prm.declare_entry("inertia",
                       "true",
                       Patterns::Bool(),
@@ -41,8 +42,8 @@ namespace FluidSurface
                       "the statistics column 'rigid multiplier'.");
     prm.declare_entry("rigid motion regularization",
                       "1e-6",
-                      Patterns::Double(0),
-                      "Scene full with inertia = false (Stokes limit): ε of the term ε(u, v) that makes the "
+                      RealRange::closed(0, 1),
+                      "Scene full with inertia = false (Stokes limit): ε, 0 ≤ ε ≤ 1 (ε ≥ 1e-12 when inertia = false), of the term ε(u, v) that makes the "
                       "step matrix invertible on the rigid motions (translations and rotations dissipate "
                       "nothing and, without the mass term, nothing else fixes them). Their amplitude is "
                       "then set exactly by the multipliers of ∫u = 0 and ∫x × u = 0; ε only adds the "
@@ -59,12 +60,10 @@ namespace FluidSurface
     convection                  = prm.get_bool("convection") && inertia;
     conserve_momenta            = prm.get_bool("conserve momenta") && inertia;
     rigid_motion_regularization = prm.get_double("rigid motion regularization");
-    if (!(Re > 0))
-      throw_invalid_entry("flow/Re", prm.get("Re"), "a positive Reynolds number");
-    if (!inertia && !(rigid_motion_regularization > 0))
+    if (!inertia && !(rigid_motion_regularization >= 1e-12))
       throw_invalid_entry("flow/rigid motion regularization",
                           prm.get("rigid motion regularization"),
-                          "ε > 0 when inertia = false (the step matrix is singular on rigid motions otherwise)");
+                          "ε ≥ 1e-12 when inertia = false (the step matrix is singular on rigid motions otherwise)");
     prm.leave_subsection();
   }
 } // namespace FluidSurface

@@ -17,7 +17,9 @@
 #include <fluid_surface/geometry/exact_geometry.h>
 #include <fluid_surface/geometry/surface_geometry.h>
 #include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/io/run_stopped.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -48,13 +50,15 @@ namespace FluidSurface
                       "arc length s = 2S θ/π).");
     prm.declare_entry("radius",
                       "1",
-                      Patterns::Double(0, Patterns::Double::max_double_value),
-                      "Radius R of the sphere (shape = sphere).");
+                      RealRange::closed(1e-3, 1e3),
+                      "Radius R, 0.001 ≤ R ≤ 1000, of the sphere (shape = sphere).");
     prm.declare_entry("semi-axes",
                       "0.61, 0.61, 2.02",
-                      Patterns::List(Patterns::Double(), 3, 3),
+                      Patterns::List(RealRange::closed(1e-3, 1e3), 3, 3),
                       "Semi-axes a, b, c of the ellipsoid x²/a² + y²/b² + z²/c² = 1 along x, y, z "
-                      "(shape = ellipsoid, or the projection target of a mesh file).");
+                      "(shape = ellipsoid, or the projection target of a mesh file): each in [0.001, 1000], and "
+                      "for shape = ellipsoid the largest at most 20 times the smallest (the cube-sphere mesh of a "
+                      "more elongated ellipsoid is too distorted for the mesh quality floor).");
     prm.declare_entry("mesh file",
                       "meshes/ellipsoid.msh",
                       Patterns::FileName(),
@@ -66,12 +70,14 @@ namespace FluidSurface
                       "Move the nodes of a mesh file radially onto the ellipsoid with the given semi-axes.");
     prm.declare_entry("refinement",
                       "3",
-                      Patterns::Integer(0, 10),
-                      "Number of global refinements of the coarse mesh (6 cells for a sphere or ellipsoid).");
+                      Patterns::Integer(0, max_refinement),
+                      "Number of global refinements of the coarse mesh (6 cells for a sphere or ellipsoid), 0 to 7; "
+                      "the refined mesh may have at most 98304 cells (6·4⁷; scene full: about 3.2 million "
+                      "unknowns, 4× the unknowns per refinement).");
     prm.declare_entry("position degree",
                       "2",
                       Patterns::Integer(1, 3),
-                      "Polynomial degree k of the position field X ∈ [Q_k]³ that defines the geometry.");
+                      "Polynomial degree k, 1 to 3, of the position field X ∈ [Q_k]³ that defines the geometry.");
     prm.leave_subsection();
     // The equilibrium shape's inputs (read only for shape = equilibrium).
     AxisymmetricEquilibrium::declare_parameters(prm);
@@ -87,16 +93,12 @@ namespace FluidSurface
               s == "equilibrium" ? Shape::equilibrium :
                                    Shape::mesh_file);
     radius = prm.get_double("radius");
-    const std::vector<std::string> axes =
-      Utilities::split_string_list(prm.get("semi-axes"));
-    for (unsigned int d = 0; d < 3; ++d)
-      {
-        semi_axes[d] = Utilities::string_to_double(axes[d]);
-        if (!(semi_axes[d] > 0))
-          throw_invalid_entry("geometry/semi-axes",
-                              prm.get("semi-axes"),
-                              "three positive semi-axes a, b, c");
-      }
+    semi_axes = get_vector(prm, "semi-axes");
+    if (shape == Shape::ellipsoid &&
+        std::max({semi_axes[0], semi_axes[1], semi_axes[2]}) > 20 * std::min({semi_axes[0], semi_axes[1], semi_axes[2]}))
+      throw_invalid_entry("geometry/semi-axes",
+                          prm.get("semi-axes"),
+                          "semi-axes whose largest is at most 20 times the smallest (shape = ellipsoid)");
     mesh_file              = prm.get("mesh file");
     project_onto_ellipsoid = prm.get_bool("project onto ellipsoid");
     refinement             = prm.get_integer("refinement");
@@ -151,11 +153,12 @@ namespace FluidSurface
       }
     catch (const ExceptionBase &exc)
       {
-        std::ostringstream msg;
-        exc.print_info(msg);
-        throw InputError(mesh_file + ": cannot read the gmsh mesh (expected an ASCII msh 2.2/4.1 file of "
-                                     "quadrilaterals): " +
-                         msg.str());
+        std::string reader = one_line_message(exc, 200);
+        if (!reader.empty() && reader.back() == '.')
+          reader.pop_back();
+        throw_invalid_entry("geometry/mesh file",
+                            mesh_file,
+                            "an ASCII gmsh mesh (msh 2.2 or 4.1) of quadrilaterals; the reader says: " + reader);
       }
     if (!coarse.all_reference_cells_are_hyper_cube())
       throw InputError(mesh_file + ": the mesh has triangles; expected an all-quadrilateral surface mesh "
@@ -168,6 +171,19 @@ namespace FluidSurface
                            Utilities::to_string(cell->face(f)->center()[1]) + ", " +
                            Utilities::to_string(cell->face(f)->center()[2]) +
                            "; expected a closed surface.");
+    if (coarse.n_active_cells() * std::pow(4.0, refinement) > max_cells)
+      {
+        unsigned int allowed = 0;
+        while (coarse.n_active_cells() * std::pow(4.0, allowed + 1) <= max_cells)
+          ++allowed;
+        throw_invalid_entry("geometry/refinement",
+                            std::to_string(refinement),
+                            "at most " + std::to_string(max_cells) + " cells after refinement: the mesh " + mesh_file +
+                              " has " + std::to_string(coarse.n_active_cells()) + " cells" +
+                              (coarse.n_active_cells() > max_cells ?
+                                 std::string(" (too many even without refinement)") :
+                                 ", so at most " + std::to_string(allowed) + " refinements"));
+      }
     tria.copy_triangulation(coarse);
   }
 
@@ -201,16 +217,7 @@ namespace FluidSurface
       });
     else if (shape == Shape::equilibrium)
       {
-        try
-          {
-            equilibrium->solve();
-          }
-        catch (const std::exception &exc)
-          {
-            throw InputError(parameter_file_name() + ": subsection equilibrium: no equilibrium shape found (" +
-                             exc.what() + "); expected area, reduced volume, branch and rotation of an "
-                             "existing up-down symmetric rotating equilibrium.");
-          }
+        solve_equilibrium_of_entries(*equilibrium);
         transform_nodes([this](const Point<3> &x) { return equilibrium->map_from_sphere(Point<3>(x / x.norm())); });
       }
     else if (project_onto_ellipsoid)

@@ -422,12 +422,12 @@ namespace FluidSurface
     prm.declare_entry("steps between checkpoints",
                       "0",
                       Patterns::Integer(0),
-                      "N_c: write a checkpoint after every N_c-th time step (0: not by steps). Checkpoints go "
+                      "N_c ≥ 0: write a checkpoint after every N_c-th time step (0: not by steps). Checkpoints go "
                       "to <output directory>/checkpoint/ (scene full only).");
     prm.declare_entry("wall time between checkpoints",
                       "600",
-                      Patterns::Double(0),
-                      "T_c in seconds: write a checkpoint when T_c seconds of wall time have passed since the "
+                      RealRange::at_least(0),
+                      "T_c ≥ 0 in seconds: write a checkpoint when T_c seconds of wall time have passed since the "
                       "last one (0: not by wall time). With both entries 0 no checkpoints are written.");
     prm.declare_entry("resume",
                       "false",
@@ -443,7 +443,7 @@ namespace FluidSurface
     prm.declare_entry("steps per run",
                       "0",
                       Patterns::Integer(0),
-                      "N_run: after N_run time steps of this run, write a checkpoint and stop with exit status "
+                      "N_run ≥ 0: after N_run time steps of this run, write a checkpoint and stop with exit status "
                       "0 (to split a long run into jobs; resume with resume = auto). 0: no limit.");
     prm.leave_subsection();
   }

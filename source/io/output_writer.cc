@@ -43,17 +43,17 @@ namespace FluidSurface
                       "used_parameters.prm and checkpoints. Never name it `output`.");
     prm.declare_entry("output interval",
                       "0",
-                      Patterns::Double(0),
-                      "Time Δt_out between two VTU files; 0 writes every step.");
+                      RealRange::at_least(0),
+                      "Time Δt_out ≥ 0 between two VTU files; 0 writes every step.");
     prm.declare_entry("write vtu", "true", Patterns::Bool(), "Write solution-NNNNN.vtu and solution.pvd.");
     prm.declare_entry("subdivisions",
                       "2",
                       Patterns::Integer(1, 8),
-                      "Each cell is written as n×n curved sub-cells (n = subdivisions).");
+                      "Each cell is written as n×n curved sub-cells (n = subdivisions, 1 to 8).");
     prm.declare_entry("screen interval",
                       "10",
                       Patterns::Integer(1),
-                      "Report a step on the screen every N steps (and the last one).");
+                      "Report a step on the screen every N ≥ 1 steps (and the last one).");
     prm.declare_entry("report wall time",
                       "true",
                       Patterns::Bool(),

@@ -1,10 +1,17 @@
+#include <deal.II/base/utilities.h>
+
 #include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/io/run_stopped.h>
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
+#include <iomanip>
+#include <locale>
 #include <regex>
 #include <sstream>
 
@@ -74,30 +81,6 @@ namespace FluidSurface
       return entries;
     }
 
-    /// The message of a deal.II exception without its source location block.
-    std::string
-    exception_message(const dealii::ExceptionBase &exc)
-    {
-      std::ostringstream out;
-      exc.print_info(out);
-      std::string message = out.str();
-      // deal.II prefixes these messages with "    " and spreads them over lines.
-      std::string compact;
-      bool        in_space = true;
-      for (const char c : message)
-        {
-          const bool space = (c == ' ' || c == '\n' || c == '\t');
-          if (space && !in_space)
-            compact += ' ';
-          if (!space)
-            compact += c;
-          in_space = space;
-        }
-      while (!compact.empty() && compact.back() == ' ')
-        compact.pop_back();
-      return compact;
-    }
-
     /// Undoes ParameterHandler's mangling of names ("_20" for a space).
     std::string
     demangle(const std::string &name)
@@ -165,6 +148,155 @@ namespace FluidSurface
     print_tree(tree, out, "");
   }
 
+  // ------------------------------------------------------------------ RealRange
+
+  namespace
+  {
+    /// @p x as one writes it in a parameter file: 0.5, 1000, 1e-6, 1e6.
+    std::string
+    number_text(const double x)
+    {
+      std::ostringstream out;
+      if (x != 0 && (std::abs(x) >= 1e5 || std::abs(x) < 1e-3))
+        out << std::scientific;
+      out << std::setprecision(std::abs(x) >= 1e5 || (x != 0 && std::abs(x) < 1e-3) ? 14 : 15) << x;
+      std::string text = out.str();
+      // Without trailing zeros of the mantissa and with a short exponent: 1.000e+06 → 1e6.
+      text = std::regex_replace(text, std::regex("\\.?0+e"), "e");
+      return std::regex_replace(text, std::regex("e\\+?(-?)0*([0-9])"), "e$1$2");
+    }
+  } // namespace
+
+  RealRange::RealRange(const double lower, const End lower_end, const double upper, const End upper_end)
+    : lower(lower)
+    , upper(upper)
+    , lower_end(std::isfinite(lower) ? lower_end : End::open)
+    , upper_end(std::isfinite(upper) ? upper_end : End::open)
+  {}
+
+  RealRange
+  RealRange::any()
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    return RealRange(-inf, End::open, inf, End::open);
+  }
+
+  RealRange
+  RealRange::above(const double lower)
+  {
+    return RealRange(lower, End::open, std::numeric_limits<double>::infinity(), End::open);
+  }
+
+  RealRange
+  RealRange::at_least(const double lower)
+  {
+    return RealRange(lower, End::closed, std::numeric_limits<double>::infinity(), End::open);
+  }
+
+  RealRange
+  RealRange::closed(const double lower, const double upper)
+  {
+    return RealRange(lower, End::closed, upper, End::closed);
+  }
+
+  RealRange
+  RealRange::open(const double lower, const double upper)
+  {
+    return RealRange(lower, End::open, upper, End::open);
+  }
+
+  RealRange
+  RealRange::left_open(const double lower, const double upper)
+  {
+    return RealRange(lower, End::open, upper, End::closed);
+  }
+
+  RealRange
+  RealRange::right_open(const double lower, const double upper)
+  {
+    return RealRange(lower, End::closed, upper, End::open);
+  }
+
+  bool
+  RealRange::contains(const double x) const
+  {
+    return std::isfinite(x) && (lower_end == End::open ? x > lower : x >= lower) &&
+           (upper_end == End::open ? x < upper : x <= upper);
+  }
+
+  std::string
+  RealRange::condition() const
+  {
+    const bool        has_lower = std::isfinite(lower), has_upper = std::isfinite(upper);
+    const std::string lower_relation = (lower_end == End::open ? " < " : " ≤ ");
+    const std::string upper_relation = (upper_end == End::open ? " < " : " ≤ ");
+    if (!has_lower && !has_upper)
+      return "any finite number";
+    if (!has_upper)
+      return std::string("x") + (lower_end == End::open ? " > " : " ≥ ") + number_text(lower);
+    if (!has_lower)
+      return "x" + upper_relation + number_text(upper);
+    return number_text(lower) + lower_relation + "x" + upper_relation + number_text(upper);
+  }
+
+  bool
+  RealRange::match(const std::string &test_string) const
+  {
+    // The whole text must be one number, read as ParameterHandler::get_double() reads it.
+    std::istringstream in(test_string);
+    in.imbue(std::locale::classic());
+    double x = 0;
+    if (!(in >> x) || !(in >> std::ws).eof())
+      return false;
+    try
+      {
+        if (dealii::Utilities::string_to_double(test_string) != x)
+          return false;
+      }
+    catch (...)
+      {
+        return false;
+      }
+    return contains(x);
+  }
+
+  std::string
+  RealRange::description(const OutputStyle) const
+  {
+    if (!std::isfinite(lower) && !std::isfinite(upper))
+      return "[Finite number]";
+    return "[Finite number x with " + condition() + "]";
+  }
+
+  std::unique_ptr<dealii::Patterns::PatternBase>
+  RealRange::clone() const
+  {
+    return std::make_unique<RealRange>(*this);
+  }
+
+  // ------------------------------------------------------------------ reading entries
+
+  dealii::Tensor<1, 3>
+  get_vector(const dealii::ParameterHandler &prm, const std::string &name)
+  {
+    const std::vector<std::string> items = dealii::Utilities::split_string_list(prm.get(name));
+    AssertThrow(items.size() == 3, dealii::ExcMessage("entry '" + name + "' is not a list of three numbers"));
+    dealii::Tensor<1, 3> v;
+    for (unsigned int d = 0; d < 3; ++d)
+      v[d] = dealii::Utilities::string_to_double(items[d]);
+    return v;
+  }
+
+  dealii::Tensor<1, 3>
+  unit_vector(const dealii::Tensor<1, 3> &v)
+  {
+    const double largest = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+    if (largest == 0)
+      return v;
+    const dealii::Tensor<1, 3> w = v / largest;
+    return w / w.norm();
+  }
+
   const std::string &
   parameter_file_name()
   {
@@ -188,11 +320,29 @@ namespace FluidSurface
     catch (const dealii::ExceptionBase &exc)
       {
         // deal.II's parser says "Line <N> of file <F>: ..."; we say "F, line N: ...".
-        const std::string message = exception_message(exc);
+        // deal.II spreads these messages over indented lines.
+        const std::string message = one_line_message(exc, std::string::npos);
         const std::regex  location("Line <([0-9]+)> of file <([^>:]*)>?:? ?");
         std::smatch       match;
         if (std::regex_search(message, match, location))
-          throw InputError(filename + ", line " + match[1].str() + ": " + match.suffix().str());
+          {
+            const std::string line = match[1].str(), text = match.suffix().str();
+            // A value that fails its pattern: name the entry with its subsections, like throw_invalid_entry().
+            const std::regex bad_value("The entry value ?(.*) for the entry named (.*) does not match the given "
+                                       "pattern: (.*)");
+            std::smatch      value_match;
+            if (std::regex_match(text, value_match, bad_value))
+              {
+                std::string path = value_match[2].str();
+                for (const EntrySetInFile &entry : scan_entries_set(filename))
+                  if (std::to_string(entry.line) == line && entry.path.size() >= path.size() &&
+                      entry.path.compare(entry.path.size() - path.size(), path.size(), path) == 0)
+                    path = entry.path;
+                throw InputError(filename + ", line " + line + ": entry '" + path + "' = '" + value_match[1].str() +
+                                 "': expected " + value_match[3].str() + ".");
+              }
+            throw InputError(filename + ", line " + line + ": " + text);
+          }
         throw InputError(filename + ": " + message);
       }
     catch (const std::exception &exc)

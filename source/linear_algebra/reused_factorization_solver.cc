@@ -1,11 +1,15 @@
 #include <deal.II/base/patterns.h>
 #include <deal.II/lac/solver_gmres.h>
 
+#include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/io/run_stopped.h>
 #include <fluid_surface/linear_algebra/bordered_system.h>
 #include <fluid_surface/linear_algebra/factorization_preconditioner.h>
 #include <fluid_surface/linear_algebra/reused_factorization_solver.h>
 
+#include <iostream>
 #include <optional>
+#include <sstream>
 
 namespace FluidSurface
 {
@@ -25,15 +29,15 @@ namespace FluidSurface
                       "iterations`; false: factorize every new matrix.");
     prm.declare_entry("max reuse iterations",
                       Patterns::Tools::to_string(defaults.max_reuse_iterations),
-                      Patterns::Integer(1),
-                      "GMRES iterations above which a solve with the kept factorization is abandoned: the "
+                      Patterns::Integer(1, 1000),
+                      "GMRES iterations, 1 to 1000, above which a solve with the kept factorization is abandoned: the "
                       "step's matrix is factorized and the system solved directly. A rejected step or a "
                       "failed solve also makes the next solve factorize.");
     prm.declare_entry("tolerance",
                       Patterns::Tools::to_string(defaults.tolerance),
-                      Patterns::Double(0, 1),
-                      "Relative residual ‖b − Kx‖/‖b‖ (true residual) at which GMRES stops; also the "
-                      "tolerance of the block-preconditioned solver of scene fixed surface.");
+                      RealRange::closed(1e-14, 1e-2),
+                      "Relative residual ‖b − Kx‖/‖b‖ (true residual), 1e-14 ≤ tolerance ≤ 1e-2, at which GMRES stops "
+                      "(below 1e-14 rounding prevents convergence); also the tolerance of the block-preconditioned solver of scene fixed surface.");
     prm.declare_entry("direct solver",
                       defaults.direct_solver,
                       Patterns::Selection("default|Amesos_Klu|Amesos_Mumps"),
@@ -144,11 +148,27 @@ namespace FluidSurface
                                    PreconditionerType                   &preconditioner)
   {
     Result result;
+    // Amesos_Mumps reports its errors on std::cerr: a failure keeps them for LinearSolverError::details(),
+    // a successful solve passes them on.
+    struct CerrCapture
+    {
+      std::ostringstream report;
+      std::streambuf    *screen = std::cerr.rdbuf(report.rdbuf());
+      bool               failed = false;
+      ~CerrCapture()
+      {
+        std::cerr.rdbuf(screen);
+        if (!failed)
+          std::cerr << report.str() << std::flush;
+      }
+    } capture;
+    std::string stage = "the GMRES solve preconditioned by the kept " + direct_solver() + " factors";
     try
       {
         if (!factorization || factorization_requested ||
             (!parameters.reuse_factorization && !factors_of_current_matrix))
           {
+            stage = "the " + direct_solver() + " factorization";
             factorize(matrix);
             result.factorized = true;
           }
@@ -156,19 +176,23 @@ namespace FluidSurface
           {
             if (solve_with_kept_factors(system, x, b, preconditioner, result.iterations))
               return result;
+            stage = "the " + direct_solver() + " factorization";
             factorize(matrix);
             result.factorized = true;
           }
+        stage = "the direct solve with the " + direct_solver() + " factors";
         std::optional<TimerOutput::Scope> section;
         if (step_timer)
           section.emplace(*step_timer, "linear solve");
         preconditioner.initialize(*factorization);
         preconditioner.vmult(x, b);
       }
-    catch (const std::exception &)
+    catch (const std::exception &exc)
       {
         factorization_requested = true;
-        throw;
+        capture.failed          = true;
+        throw LinearSolverError(stage + " failed (" + one_line_message(exc, 200) + ")",
+                                capture.report.str() + exc.what());
       }
     return result;
   }

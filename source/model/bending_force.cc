@@ -12,8 +12,8 @@ namespace FluidSurface
     prm.declare_entry("enabled", "true", Patterns::Bool(), "Assemble the Helfrich bending force b.");
     prm.declare_entry("Be",
                       "1",
-                      Patterns::Double(0, Patterns::Double::max_double_value),
-                      "Bending capillary number Be = ρU²L²/κ_b; the bending energy is (1/2Be)∫H².");
+                      RealRange::closed(1e-6, 1e6),
+                      "Bending capillary number Be = ρU²L²/κ_b, 1e-6 ≤ Be ≤ 1e6; the bending energy is (1/2Be)∫H².");
     prm.leave_subsection();
   }
 
@@ -23,8 +23,6 @@ namespace FluidSurface
     prm.enter_subsection("bending");
     enabled = prm.get_bool("enabled");
     Be      = prm.get_double("Be");
-    if (!(Be > 0))
-      throw_invalid_entry("bending/Be", prm.get("Be"), "a positive bending number Be");
     prm.leave_subsection();
   }
 

@@ -17,6 +17,7 @@
 #include <fluid_surface/io/output_writer.h>
 #include <fluid_surface/postprocess/speed_postprocessor.h>
 #include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/io/run_stopped.h>
 #include <fluid_surface/linear_algebra/bordered_system.h>
 #include <fluid_surface/model/fluid_deformable_surface.h>
 
@@ -44,29 +45,37 @@ namespace FluidSurface
     prm.enter_subsection("initial state");
     prm.declare_entry("angular velocity",
                       "0",
-                      Patterns::Double(),
-                      "ω₀ of the initial rigid rotation u₀ = ω₀ e × (x − c).");
+                      RealRange::closed(-100, 100),
+                      "ω₀, |ω₀| ≤ 100, of the initial rigid rotation u₀ = ω₀ e × (x − c). (Velocities are scaled with "
+                      "U; faster initial states only shrink τ until the run no longer finishes.)");
     prm.declare_entry("equilibrium rotation",
                       "false",
                       Patterns::Bool(),
                       "With geometry/shape = equilibrium: ω₀ is the equilibrium's angular velocity ω (the entry "
                       "angular velocity is ignored), so that u₀ = ω e × (x − c) with the default e = z, c = 0 "
                       "is the equilibrium's rigid rotation.");
-    prm.declare_entry("rotation axis", "0, 0, 1", Patterns::List(Patterns::Double(), 3, 3), "Axis e (normalized).");
-    prm.declare_entry("rotation centre", "0, 0, 0", Patterns::List(Patterns::Double(), 3, 3), "Centre c.");
+    prm.declare_entry("rotation axis",
+                      "0, 0, 1",
+                      Patterns::List(RealRange::any(), 3, 3),
+                      "Axis e: three finite numbers, not all 0 (normalized).");
+    prm.declare_entry("rotation centre",
+                      "0, 0, 0",
+                      Patterns::List(RealRange::closed(-100, 100), 3, 3),
+                      "Centre c: three numbers, each |c_i| ≤ 100.");
     prm.declare_entry("translation velocity",
                       "0, 0, 0",
-                      Patterns::List(Patterns::Double(), 3, 3),
-                      "Uniform velocity U added to u₀ (a rigid translation).");
+                      Patterns::List(RealRange::closed(-100, 100), 3, 3),
+                      "Uniform velocity U added to u₀ (a rigid translation): three numbers, each |U_i| ≤ 100.");
     prm.declare_entry("velocity perturbation",
                       "0",
-                      Patterns::Double(0),
-                      "Amplitude ε_u of a smooth seeded random velocity field added to u₀.");
+                      RealRange::closed(0, 100),
+                      "Amplitude ε_u, 0 ≤ ε_u ≤ 100, of a smooth seeded random velocity field added to u₀.");
     prm.declare_entry("shape perturbation",
                       "0",
-                      Patterns::Double(0),
-                      "Amplitude ε_X of a smooth seeded random radial displacement of the initial shape.");
-    prm.declare_entry("random seed", "1", Patterns::Integer(0), "Seed of the perturbations (same on every rank).");
+                      RealRange::closed(0, 1),
+                      "Amplitude ε_X, 0 ≤ ε_X ≤ 1, of a smooth seeded random radial displacement of the initial "
+                      "shape (at most ε_X; a displacement of the order of the shape's size folds the surface).");
+    prm.declare_entry("random seed", "1", Patterns::Integer(0), "Seed ≥ 0 of the perturbations (same on every rank).");
     prm.leave_subsection();
   }
 
@@ -89,19 +98,11 @@ namespace FluidSurface
       throw_invalid_entry("initial state/equilibrium rotation",
                           "true",
                           "false unless geometry/shape = equilibrium (there is no equilibrium to take ω from)");
-    const auto axis          = Utilities::split_string_list(prm.get("rotation axis"));
-    const auto centre        = Utilities::split_string_list(prm.get("rotation centre"));
-    for (unsigned int d = 0; d < 3; ++d)
-      {
-        rotation_axis[d]   = Utilities::string_to_double(axis[d]);
-        rotation_centre[d] = Utilities::string_to_double(centre[d]);
-      }
+    rotation_axis = unit_vector(get_vector(prm, "rotation axis"));
     if (rotation_axis.norm() == 0)
       throw_invalid_entry("initial state/rotation axis", prm.get("rotation axis"), "a non-zero vector");
-    rotation_axis /= rotation_axis.norm();
-    const auto U = Utilities::split_string_list(prm.get("translation velocity"));
-    for (unsigned int d = 0; d < 3; ++d)
-      translation_velocity[d] = Utilities::string_to_double(U[d]);
+    rotation_centre      = Point<3>(get_vector(prm, "rotation centre"));
+    translation_velocity = get_vector(prm, "translation velocity");
     velocity_perturbation = prm.get_double("velocity perturbation");
     shape_perturbation    = prm.get_double("shape perturbation");
     random_seed           = prm.get_integer("random seed");
@@ -968,10 +969,18 @@ namespace FluidSurface
           rigid += mu[k] * mu[k];
         result.rigid_force = std::sqrt(rigid);
       }
+    catch (const LinearSolverError &exc)
+      {
+        linear_solver.request_factorization();
+        result.failure         = std::string("linear solver failed: ") + exc.what();
+        result.failure_details = exc.details();
+        return result;
+      }
     catch (const std::exception &exc)
       {
         linear_solver.request_factorization();
-        result.failure = std::string("linear solver failed: ") + exc.what();
+        result.failure         = "linear solver failed: " + one_line_message(exc, 200);
+        result.failure_details = exc.what();
         return result;
       }
     VectorType &x1 = solution.block(0);

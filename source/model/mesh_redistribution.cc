@@ -38,8 +38,8 @@ namespace FluidSurface
                       "Nodal (Gauss–Lobatto) quadrature for (Y·ñ, φ) and (κñ, η), as in the BGN scheme.");
     prm.declare_entry("relaxation time",
                       "0.05",
-                      Patterns::Double(0),
-                      "T_r of the tangential damping (T_r/τ)(P̃(Y − X^m), η)_h added to the BGN equation: "
+                      RealRange::closed(0, 1e6),
+                      "T_r, 0 ≤ T_r ≤ 1e6, of the tangential damping (T_r/τ)(P̃(Y − X^m), η)_h added to the BGN equation: "
                       "the mesh relaxes towards the BGN distribution on the time scale T_r h² instead of "
                       "jumping there within one step, so that steps τ → 0 change nothing. 0: plain BGN.");
     prm.declare_entry("follow rigid motion",
@@ -51,14 +51,14 @@ namespace FluidSurface
                       "about its own axis of symmetry (R·ν ≡ 0) leaves its mesh in place. No effect when T_r = 0.");
     prm.declare_entry("rigid motion cutoff",
                       "0.01",
-                      Patterns::Double(0),
-                      "ε of the fit of R: min ∫(u·ν − R·ν)² + ε|S||c|², c the coefficients of R in the basis e_d, "
+                      RealRange::at_least(0),
+                      "ε ≥ 0 of the fit of R: min ∫(u·ν − R·ν)² + ε|S||c|², c the coefficients of R in the basis e_d, "
                       "e_d × (x − x_c)/R_g (R_g the radius of gyration); rigid motions with ∫(R·ν)² ≪ ε|S||c|² are "
                       "not followed.");
     prm.declare_entry("mesh quality floor",
                       "0.02",
-                      Patterns::Double(0, 1),
-                      "q_min: the run stops when min over cells of σ_min/σ_max of the Jacobian falls below.");
+                      RealRange::closed(0, 1),
+                      "q_min, 0 ≤ q_min ≤ 1: the run stops when min over cells of σ_min/σ_max of the Jacobian falls below.");
     prm.leave_subsection();
   }
 

@@ -1,3 +1,4 @@
+#include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/model/volume_constraint.h>
 
 namespace FluidSurface
@@ -14,8 +15,8 @@ namespace FluidSurface
                       "Keep the enclosed volume V with the global multiplier γ: ∫u·ν = −(V − V₀)/τ_c.");
     prm.declare_entry("drift correction time",
                       "0.01",
-                      Patterns::Double(0),
-                      "τ_drift: volume and area drifts are returned at the rate (V − V₀)/τ_c with "
+                      RealRange::at_least(0),
+                      "τ_drift ≥ 0: volume and area drifts are returned at the rate (V − V₀)/τ_c with "
                       "τ_c = max(τ_drift, τ_max) (τ_max = time stepping/maximum time step; likewise for the area "
                       "through div_P u, and with `conserve momenta` the momenta by the fraction τ/τ_c per step). "
                       "τ_c does not depend on the step τ, so a step retried with a smaller τ asks for a "

@@ -22,12 +22,13 @@ namespace FluidSurface
     prm.enter_subsection("diagnostics");
     prm.declare_entry("axis",
                       "0, 0, 1",
-                      Patterns::List(Patterns::Double(), 3, 3),
-                      "Axis e of the angular velocity ω(t) = (1/|S|)∫(u·e_φ)/r (through the centre of mass).");
+                      Patterns::List(RealRange::any(), 3, 3),
+                      "Axis e of the angular velocity ω(t) = (1/|S|)∫(u·e_φ)/r (through the centre of mass): three "
+                      "finite numbers, not all 0 (normalized).");
     prm.declare_entry("angular velocity window",
                       "5, 10",
-                      Patterns::List(Patterns::Double(0), 2, 2),
-                      "Time window [t₀, t₁] of the mean angular velocity ⟨ω⟩ in the summary.");
+                      Patterns::List(RealRange::at_least(0), 2, 2),
+                      "Time window [t₀, t₁], 0 ≤ t₀ < t₁, of the mean angular velocity ⟨ω⟩ in the summary.");
     prm.declare_entry("reference equilibrium",
                       "none",
                       Patterns::Selection("none|prolate|oblate"),
@@ -38,7 +39,7 @@ namespace FluidSurface
     prm.declare_entry("section angles",
                       "256",
                       Patterns::Integer(16, 65536),
-                      "Number n of equispaced polar angles φ_j at which the sections of S and S_O are compared "
+                      "Number n, 16 ≤ n ≤ 65536, of equispaced polar angles φ_j at which the sections of S and S_O are compared "
                       "in E(L²) (trapezoidal rule).");
     prm.leave_subsection();
   }
@@ -47,12 +48,9 @@ namespace FluidSurface
   Diagnostics::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("diagnostics");
-    const auto a = Utilities::split_string_list(prm.get("axis"));
-    for (unsigned int d = 0; d < 3; ++d)
-      axis[d] = Utilities::string_to_double(a[d]);
+    axis = unit_vector(get_vector(prm, "axis"));
     if (axis.norm() == 0)
       throw_invalid_entry("diagnostics/axis", prm.get("axis"), "a non-zero vector");
-    axis /= axis.norm();
     const auto w = Utilities::split_string_list(prm.get("angular velocity window"));
     angular_velocity_window[0] = Utilities::string_to_double(w[0]);
     angular_velocity_window[1] = Utilities::string_to_double(w[1]);

@@ -1,5 +1,6 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/utilities.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -543,7 +545,9 @@ namespace FluidSurface
       problem.V0 = problem.volume_at(v);
       x          = spheroid_state(problem, prm.branch, v);
       if (!problem.newton(x, prm.newton_tolerance, iterations) || !on_branch(problem, prm.branch, x))
-        throw std::runtime_error("AxisymmetricEquilibrium: no convergence near the sphere.");
+        throw AxisymmetricEquilibrium::NoSolution(AxisymmetricEquilibrium::NoSolution::Stage::near_sphere,
+                                                  1.0,
+                                                  "AxisymmetricEquilibrium: no convergence near the sphere.");
       while (v > prm.reduced_volume)
         {
           const double        v_next = std::max(prm.reduced_volume, v - dv);
@@ -557,8 +561,10 @@ namespace FluidSurface
               dv *= 1.5;
             }
           else if ((dv *= 0.5) < 1e-5)
-            throw std::runtime_error("AxisymmetricEquilibrium: continuation in the reduced volume "
-                                     "stalled at v = " + std::to_string(v) + ".");
+            throw AxisymmetricEquilibrium::NoSolution(AxisymmetricEquilibrium::NoSolution::Stage::reduced_volume,
+                                                      v,
+                                                      "AxisymmetricEquilibrium: continuation in the reduced volume "
+                                                      "stalled at v = " + std::to_string(v) + ".");
         }
       return x;
     }
@@ -601,10 +607,14 @@ namespace FluidSurface
               step *= 1.5;
             }
           else if (std::abs(step *= 0.5) < 1e-6 * std::max(1., std::abs(target)))
-            throw std::runtime_error("AxisymmetricEquilibrium: continuation in the rotation stalled at " +
-                                     std::string(by_L ? "L = " : "ω² = ") + std::to_string(done) +
-                                     " (the branch of equilibria at fixed ω folds back near there; "
-                                     "prescribing the angular momentum may continue it).");
+            throw AxisymmetricEquilibrium::NoSolution(
+              AxisymmetricEquilibrium::NoSolution::Stage::rotation,
+              done,
+              "AxisymmetricEquilibrium: continuation in the rotation stalled at " +
+                std::string(by_L ? "L = " : "ω² = ") + std::to_string(done) +
+                (by_L ? std::string(".") :
+                        std::string(" (the branch of equilibria at fixed ω folds back near there; "
+                                    "prescribing the angular momentum may continue it).")));
         }
       return by_L ? x[problem.w()] : prm.angular_velocity;
     }
@@ -635,38 +645,43 @@ namespace FluidSurface
   void
   AxisymmetricEquilibrium::declare_parameters(dealii::ParameterHandler &prm)
   {
-    using dealii::Patterns::Double;
     using dealii::Patterns::Integer;
+    using dealii::Patterns::List;
     prm.enter_subsection("equilibrium");
-    prm.declare_entry("area", "12.566370614359172", Double(0),
-                      "Surface area A of the equilibrium (4π is the area of the unit sphere).");
-    prm.declare_entry("reduced volume", "0.75", Double(0, 1),
-                      "Reduced volume v = V / ((4π/3)(A/(4π))^{3/2}), 0 < v ≤ 1; v = 1 is the sphere.");
+    prm.declare_entry("area", "12.566370614359172", RealRange::closed(1e-6, 1e6),
+                      "Surface area A, 1e-6 ≤ A ≤ 1e6, of the equilibrium (4π is the area of the unit sphere).");
+    prm.declare_entry("reduced volume", "0.75", RealRange::closed(0.15, 1),
+                      "Reduced volume v = V / ((4π/3)(A/(4π))^{3/2}), v = 1 the sphere; the solver reaches "
+                      "0.55 ≤ v ≤ 1 on the prolate branch and 0.15 ≤ v ≤ 1 on the oblate branch (smaller v are "
+                      "refused: its continuation from the sphere stalls or takes minutes there).");
     prm.declare_entry("branch", "prolate", dealii::Patterns::Selection("prolate|oblate"),
                       "Branch of up-down symmetric shapes: prolate (elongated along the rotation axis z, "
                       "dumbbell-like at small v) or oblate (flattened, discocyte-like at small v).");
-    prm.declare_entry("Be", "1", Double(0),
-                      "Bending capillary number Be; the bending energy is F_bend = (1/(2Be))∫H². The shape "
-                      "depends on Be·ω².");
-    prm.declare_entry("angular velocity", "", dealii::Patterns::List(Double(), 0, 1),
-                      "Angular velocity ω of the rigid rotation u = ω e_z × X about z. Empty means 0 unless "
-                      "'angular momentum' is given; give at most one of the two.");
-    prm.declare_entry("angular momentum", "", dealii::Patterns::List(Double(), 0, 1),
-                      "Angular momentum L = ω I_zz about z (I_zz = ∫(x²+y²)); when given, ω is an unknown and "
-                      "the shape is a critical point of F_bend + L²/(2 I_zz). Empty: ω is prescribed instead.");
+    prm.declare_entry("Be", "1", RealRange::closed(1e-2, 1e2),
+                      "Bending capillary number Be, 0.01 ≤ Be ≤ 100 (the range in which the solver's Newton "
+                      "converges); the bending energy is F_bend = (1/(2Be))∫H². The shape depends on Be·ω².");
+    prm.declare_entry("angular velocity", "", List(RealRange::any(), 0, 1),
+                      "Angular velocity ω (a finite number) of the rigid rotation u = ω e_z × X about z. Empty "
+                      "means 0 unless 'angular momentum' is given; give at most one of the two.");
+    prm.declare_entry("angular momentum", "", List(RealRange::any(), 0, 1),
+                      "Angular momentum L (a finite number) = ω I_zz about z (I_zz = ∫(x²+y²)); when given, ω is "
+                      "an unknown and the shape is a critical point of F_bend + L²/(2 I_zz). Empty: ω is "
+                      "prescribed instead.");
     prm.declare_entry("output file", "equilibrium.csv", dealii::Patterns::FileName(),
                       "CSV file for the generating curve (columns s,r,z,psi,H; s arc length from the north "
-                      "pole, ψ tangent angle, H = k_s + k_φ with H = −2/R on a sphere).");
-    prm.declare_entry("collocation points", "48", Integer(8, 1024),
-                      "N: Chebyshev collocation points 0..N on the half generating curve (pole to equator); "
-                      "the error decays exponentially in N.");
-    prm.declare_entry("maximal collocation points", "512", Integer(8, 4096),
-                      "N is doubled, up to this value, while the virial identity 3Vγ = 2p0A + 2ω²I_zz (not imposed "
-                      "by the discretization) fails by more than 1e-9; equal to 'collocation points' keeps N fixed.");
-    prm.declare_entry("output points", "401", Integer(2),
-                      "Number of rows of the CSV, equispaced in arc length s from pole to pole.");
-    prm.declare_entry("Newton tolerance", "1e-12", Double(1e-16, 1e-2),
-                      "Newton stops when the largest update relative to the largest unknown is below this.");
+                      "pole, ψ tangent angle, H = k_s + k_φ with H = −2/R on a sphere); its directory must exist.");
+    prm.declare_entry("collocation points", "48", Integer(8, 512),
+                      "N, 8 ≤ N ≤ 512: Chebyshev collocation points 0..N on the half generating curve (pole to "
+                      "equator); the error decays exponentially in N (N = 512 takes about 15 s).");
+    prm.declare_entry("maximal collocation points", "512", Integer(8, 512),
+                      "N is doubled, up to this value (at least 'collocation points', at most 512), while the virial "
+                      "identity 3Vγ = 2p0A + 2ω²I_zz (not imposed by the discretization) fails by more than 1e-9; "
+                      "equal to 'collocation points' keeps N fixed.");
+    prm.declare_entry("output points", "401", Integer(2, 100000),
+                      "Number of rows of the CSV, 2 to 100000, equispaced in arc length s from pole to pole.");
+    prm.declare_entry("Newton tolerance", "1e-12", RealRange::closed(1e-16, 1e-2),
+                      "Newton stops when the largest update relative to the largest unknown is below this "
+                      "(1e-16 to 0.01).");
     prm.leave_subsection();
   }
 
@@ -683,6 +698,7 @@ namespace FluidSurface
     p.bending_number = handler.get_double("Be");
     const std::string omega_text = handler.get("angular velocity");
     const std::string L_text     = handler.get("angular momentum");
+    const std::string v_text     = handler.get("reduced volume");
     p.output_file                = handler.get("output file");
     p.collocation_points         = handler.get_integer("collocation points");
     p.maximal_collocation_points = handler.get_integer("maximal collocation points");
@@ -691,29 +707,35 @@ namespace FluidSurface
     handler.leave_subsection();
 
     const auto blank = [](const std::string &s) { return s.find_first_not_of(" \t") == std::string::npos; };
-    if (!(p.area > 0))
-      throw_invalid_entry("equilibrium/area", std::to_string(p.area), "a positive area A");
-    if (!(p.reduced_volume > 0))
-      throw_invalid_entry("equilibrium/reduced volume", std::to_string(p.reduced_volume),
-                          "a reduced volume 0 < v ≤ 1");
-    if (!(p.bending_number > 0))
-      throw_invalid_entry("equilibrium/Be", std::to_string(p.bending_number), "a positive Be");
+    if (p.branch == Branch::prolate && p.reduced_volume < 0.55)
+      throw_invalid_entry("equilibrium/reduced volume", v_text,
+                          "0.55 ≤ v ≤ 1 on the prolate branch (0.15 ≤ v ≤ 1 on the oblate branch)");
     if (!blank(omega_text) && !blank(L_text))
       throw_invalid_entry("equilibrium/angular momentum", L_text,
                           "an empty value when 'angular velocity' is given (prescribe ω or L, not both)");
+    if (p.maximal_collocation_points < p.collocation_points)
+      throw_invalid_entry("equilibrium/maximal collocation points", std::to_string(p.maximal_collocation_points),
+                          "at least 'collocation points' = " + std::to_string(p.collocation_points));
+    {
+      const std::filesystem::path file(p.output_file), directory = file.parent_path();
+      if (file.filename().empty() || std::filesystem::is_directory(file) ||
+          !(directory.empty() || std::filesystem::is_directory(directory)))
+        throw_invalid_entry("equilibrium/output file", p.output_file,
+                            "a file name in an existing directory");
+    }
     if (!blank(L_text))
       {
         p.prescribed       = Prescribed::angular_momentum;
-        p.angular_momentum = std::stod(L_text);
+        p.angular_momentum = dealii::Utilities::string_to_double(L_text);
       }
     else
       {
         p.prescribed       = Prescribed::angular_velocity;
-        p.angular_velocity = blank(omega_text) ? 0. : std::stod(omega_text);
+        p.angular_velocity = blank(omega_text) ? 0. : dealii::Utilities::string_to_double(omega_text);
       }
     const bool rotating = (p.prescribed == Prescribed::angular_momentum ? p.angular_momentum != 0 : p.angular_velocity != 0);
     if (p.reduced_volume >= 1 && rotating)
-      throw_invalid_entry("equilibrium/reduced volume", std::to_string(p.reduced_volume),
+      throw_invalid_entry("equilibrium/reduced volume", v_text,
                           "a value below 1 for a rotating shape (at v = 1 only the sphere is admissible, and a "
                           "rotating sphere is not an equilibrium)");
     prm = p;
@@ -1116,6 +1138,42 @@ namespace FluidSurface
 
 
 
+  void
+  solve_equilibrium_of_entries(AxisymmetricEquilibrium &equilibrium)
+  {
+    try
+      {
+        equilibrium.solve();
+      }
+    catch (const AxisymmetricEquilibrium::NoSolution &exc)
+      {
+        using Stage                                  = AxisymmetricEquilibrium::NoSolution::Stage;
+        const AxisymmetricEquilibrium::Parameters &p = equilibrium.parameters();
+        const auto text = [](const double x) { return dealii::Utilities::to_string(x); };
+        const std::string branch = (p.branch == AxisymmetricEquilibrium::Branch::prolate ? "prolate" : "oblate");
+        const std::string where  = " on the " + branch + " branch at A = " + text(p.area) +
+                                  ", v = " + text(p.reduced_volume) + ", Be = " + text(p.bending_number);
+        const bool by_L = (p.prescribed == AxisymmetricEquilibrium::Prescribed::angular_momentum);
+        if (exc.stage == Stage::rotation && by_L)
+          throw_invalid_entry("equilibrium/angular momentum", text(p.angular_momentum),
+                              "an angular momentum that the continuation from rest reaches" + where +
+                                "; it stalled at L = " + text(exc.reached));
+        if (exc.stage == Stage::rotation)
+          throw_invalid_entry("equilibrium/angular velocity", text(p.angular_velocity),
+                              "an angular velocity below the fold of the branch" + where + "; the continuation in ω² "
+                                "stalled at ω² = " + text(exc.reached) + " (prescribing the angular momentum instead "
+                                "may continue past the fold)");
+        if (exc.stage == Stage::reduced_volume)
+          throw_invalid_entry("equilibrium/reduced volume", text(p.reduced_volume),
+                              "a reduced volume that the continuation from the sphere reaches" + where +
+                                "; it stalled at v = " + text(exc.reached));
+        throw InputError((parameter_file_name().empty() ? std::string("parameters") : parameter_file_name()) +
+                         ": entries 'equilibrium/area' = '" + text(p.area) + "' and 'equilibrium/Be' = '" +
+                         text(p.bending_number) + "': Newton found no equilibrium near the sphere" + where +
+                         "; expected an area and Be nearer to the scaling A = 4π, Be = 1.");
+      }
+  }
+
   int
   run_equilibrium_command(const std::string &parameter_file, std::ostream &out)
   {
@@ -1124,7 +1182,7 @@ namespace FluidSurface
     parse_parameter_file(prm, parameter_file);
     AxisymmetricEquilibrium equilibrium;
     equilibrium.parse_parameters(prm);
-    equilibrium.solve();
+    solve_equilibrium_of_entries(equilibrium);
     equilibrium.print(out);
     equilibrium.write_curve_csv(equilibrium.parameters().output_file);
     out << "output file: " << equilibrium.parameters().output_file << '\n';

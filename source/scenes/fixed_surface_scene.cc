@@ -4,6 +4,7 @@
 #include <fluid_surface/io/output_writer.h>
 #include <fluid_surface/postprocess/speed_postprocessor.h>
 #include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/io/run_stopped.h>
 #include <fluid_surface/scenes/fixed_surface_scene.h>
 
 #include <Sacado.hpp>
@@ -11,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 
 namespace FluidSurface
 {
@@ -251,11 +253,11 @@ namespace FluidSurface
     prm.declare_entry("mode number",
                       "2",
                       Patterns::Integer(2, 10),
-                      "Degree l of the zonal spherical harmonic Y_l⁰ of the decaying mode curl_S Y_l⁰.");
+                      "Degree l, 2 ≤ l ≤ 10, of the zonal spherical harmonic Y_l⁰ of the decaying mode curl_S Y_l⁰.");
     prm.declare_entry("angular velocity",
                       "1",
-                      Patterns::Double(),
-                      "ω of the Killing field u = ω e_z × x.");
+                      RealRange::closed(-100, 100),
+                      "ω, |ω| ≤ 100, of the Killing field u = ω e_z × x.");
     prm.leave_subsection();
     // `time stepping` (end time, time step) is TimeStepper's, `flow` SurfaceFluid's and `fixed surface
     // solver` SurfaceFlow's; the Simulation declares each once.
@@ -294,8 +296,16 @@ namespace FluidSurface
     prm.enter_subsection("time stepping");
     end_time  = prm.get_double("end time");
     time_step = prm.get_double("time step");
-    if (!(time_step > 0))
-      throw_invalid_entry("time stepping/time step", prm.get("time step"), "a positive time step τ");
+    if (!is_stationary() && !(std::round(end_time / time_step) >= 1))
+      throw_invalid_entry("time stepping/end time",
+                          prm.get("end time"),
+                          "at least one time step (T ≥ τ/2, τ = " + prm.get("time step") + ") for the time-dependent "
+                          "problem " + name);
+    if (!is_stationary() && !(std::round(end_time / time_step) <= std::numeric_limits<unsigned int>::max()))
+      throw_invalid_entry("time stepping/end time",
+                          prm.get("end time"),
+                          "at most " + std::to_string(std::numeric_limits<unsigned int>::max()) +
+                            " time steps of τ = " + prm.get("time step"));
     prm.leave_subsection();
     SurfaceFluid fluid;
     fluid.parse_parameters(prm);
@@ -304,9 +314,7 @@ namespace FluidSurface
     prm.enter_subsection("geometry");
     const std::string shape = prm.get("shape");
     sphere_radius           = prm.get_double("radius");
-    const std::vector<std::string> axes = Utilities::split_string_list(prm.get("semi-axes"));
-    for (unsigned int d = 0; d < 3; ++d)
-      semi_axes[d] = Utilities::string_to_double(axes[d]);
+    semi_axes               = get_vector(prm, "semi-axes");
     prm.leave_subsection();
     const bool needs_sphere = problem != Problem::manufactured_ellipsoid;
     if (needs_sphere && shape != "sphere")
@@ -344,10 +352,33 @@ namespace FluidSurface
     pcout << "-- fixed surface: " << geometry.description() << '\n'
           << "   " << flow.description() << std::endl;
 
-    if (is_stationary())
-      solve_stationary(flow, exact);
-    else
-      run_time_loop(flow, exact);
+    current_step = 0;
+    current_time = 0;
+    try
+      {
+        if (is_stationary())
+          solve_stationary(flow, exact);
+        else
+          run_time_loop(flow, exact);
+      }
+    catch (const InputError &)
+      {
+        throw;
+      }
+    catch (const std::exception &exc)
+      {
+        // One line on the screen; the solver's own report (Trilinos, Amesos, GMRES) in error.log.
+        std::ostringstream reason;
+        reason << "step " << current_step << " failed at t = " << current_time << ": " << one_line_message(exc, 200);
+        const auto *solver_error = dynamic_cast<const LinearSolverError *>(&exc);
+        if (Utilities::MPI::this_mpi_process(geometry.get_communicator()) == 0)
+          append_to_error_log(output.directory(),
+                              reason.str() + '\n' + (solver_error ? solver_error->details() : std::string(exc.what())));
+        throw RunFailed(reason.str(),
+                        "the report is in " + output.directory() + "error.log; try 'fixed surface solver/linear "
+                        "solver = direct', a larger 'fixed surface solver/max linear iterations' or a smaller "
+                        "'time stepping/time step'");
+      }
     last_results.wall_time = wall_timer.wall_time();
   }
 
@@ -401,6 +432,8 @@ namespace FluidSurface
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
         time                              = step * time_step;
+        current_step                      = step;
+        current_time                      = time;
         const SurfaceFlow::SolveInfo info = flow.advance(time, time_step);
         record(flow, exact, step, time, time_step, info);
         if (output.due(time) || step == n_steps)

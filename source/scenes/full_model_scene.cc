@@ -50,7 +50,11 @@ namespace FluidSurface
   FullModelScene::run()
   {
     if (!resuming)
-      checkpoint.clear(); // those of an earlier run in the same directory
+      {
+        checkpoint.clear(); // those of an earlier run in the same directory
+        if (Utilities::MPI::this_mpi_process(communicator) == 0)
+          std::filesystem::remove(output.directory() + "error.log");
+      }
     model.set_timer(computing_timer);
     // The timing is written however the run ends (a failed run's timing shows where it spent its time),
     // and the factorization kept across steps is freed.
@@ -77,36 +81,90 @@ namespace FluidSurface
     const StopSignals stop_signals(communicator);
     steps_this_run       = 0;
     last_checkpoint_step = resuming ? time.step_number() : numbers::invalid_unsigned_int;
-    while (time.before_end())
+    // A run that stops early still writes its summary, with the reason in its status line.
+    try
       {
-        const double                             tau  = time.step_size();
-        const FluidDeformableSurface::StepResult step = model.advance(tau);
-        if (!step.solved)
+        while (time.before_end())
           {
-            retry_step(step.failure);
-            continue;
+            const double                             tau  = time.step_size();
+            const FluidDeformableSurface::StepResult step = model.advance(tau);
+            if (!step.solved)
+              {
+                retry_step(tau, step.failure, step.failure_details);
+                continue;
+              }
+            const Energies                       candidate = candidate_energies();
+            const EnergyStepController::Decision energy =
+              energy_control.decide(total_energy, candidate.total, tau);
+            if (energy.verdict == EnergyStepController::Verdict::reject)
+              {
+                retry_step(tau, energy.reason, "");
+                continue;
+              }
+            accept_step(tau, candidate, energy);
+            record_step(tau, step);
+            check_mesh_quality();
+            if (output.due(time.time()) || !time.before_end())
+              write_output();
+            ++steps_this_run;
+            checkpoint_or_stop(stop_signals.received());
           }
-        const Energies                       candidate = candidate_energies();
-        const EnergyStepController::Decision energy    = energy_control.decide(total_energy, candidate.total, tau);
-        if (energy.verdict == EnergyStepController::Verdict::reject)
-          {
-            retry_step(energy.reason);
-            continue;
-          }
-        accept_step(tau, candidate, energy);
-        record_step(tau, step);
-        check_mesh_quality();
-        if (output.due(time.time()) || !time.before_end())
-          write_output();
-        ++steps_this_run;
-        checkpoint_or_stop(stop_signals.received());
+      }
+    catch (const RunStopped &stop)
+      {
+        write_summary_of_stopped_run(stop.what());
+        throw;
+      }
+    catch (const RunFailed &failure)
+      {
+        write_summary_of_stopped_run(failure.reason());
+        throw;
+      }
+    catch (const InputError &)
+      {
+        throw;
+      }
+    catch (const std::exception &exc)
+      {
+        // Anything else (a failed write, a deal.II error): one line on the screen, the whole report in error.log.
+        std::ostringstream reason;
+        reason << "step " << time.step_number() + 1 << " failed at t = " << time.time() << ": "
+               << one_line_message(exc, 200);
+        log_error(reason.str() + '\n' + exc.what());
+        write_summary_of_stopped_run(reason.str());
+        throw RunFailed(reason.str(), "the report is in " + output.directory() + "error.log");
       }
     // A final checkpoint lets a finished run be extended (a later end time, resume = auto).
     if (checkpoint.enabled() && last_checkpoint_step != time.step_number())
       write_checkpoint();
 
     diagnostics.compare_with_mean_rotation(geometry);
-    write_summary();
+    write_summary("completed");
+  }
+
+  void
+  FullModelScene::write_summary_of_stopped_run(const std::string &reason)
+  {
+    std::ostringstream status;
+    status << "stopped at t = " << time.time() << ": " << reason;
+    // Without the comparison of the final surface with the mean-rotation equilibrium: it is collective, and
+    // a failure need not have reached every rank.
+    try
+      {
+        write_summary(status.str());
+      }
+    catch (const std::exception &exc)
+      {
+        // The reason the run stopped matters more than its summary.
+        pcout << "    warning: the summary could not be written (" << one_line_message(exc, 200) << ")" << std::endl;
+      }
+  }
+
+  void
+  FullModelScene::log_error(const std::string &text) const
+  {
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      append_to_error_log(output.directory(), text);
   }
 
   FullModelScene::Energies
@@ -121,10 +179,31 @@ namespace FluidSurface
   }
 
   void
-  FullModelScene::retry_step(const std::string &reason)
+  FullModelScene::retry_step(const double tau, const std::string &reason, const std::string &solver_report)
   {
     model.restore_last_state();
-    time.reject(reason);
+    if (!solver_report.empty())
+      {
+        std::ostringstream entry;
+        entry << "step " << time.step_number() + 1 << " at t = " << time.time() << " with τ = " << tau << ": "
+              << reason << '\n'
+              << solver_report;
+        log_error(entry.str());
+      }
+    std::string advice;
+    if (!solver_report.empty())
+      advice = "the linear solver failed (its report is in " + output.directory() + "error.log); try a smaller "
+               "'time stepping/maximum time step', 'linear solver/reuse factorization = false' or another "
+               "'linear solver/direct solver'; ";
+    else if (reason.rfind("the solution is not finite", 0) == 0)
+      advice = "the step's solution was not finite; try a smaller 'time stepping/maximum time step' or a finer "
+               "'geometry/refinement', and check that the physical parameters are of order 1; ";
+    else
+      advice = "the energy rose faster than 'time stepping/energy tolerance' allows at every τ tried; try a finer "
+               "'geometry/refinement' or a smaller 'time stepping/maximum time step' (doc/scheme.md, \"The "
+               "residual energy rise\"); ";
+    time.reject(reason, advice + "the output up to the last accepted step, the summary and the last checkpoint "
+                                 "are intact");
   }
 
   void
@@ -250,8 +329,11 @@ namespace FluidSurface
       {
         std::ostringstream msg;
         msg << "mesh quality " << quality << " fell below the 'mesh quality floor' " << model.mesh_quality_floor()
-            << " at t = " << time.time() << "; the output up to the previous step is intact";
-        throw std::runtime_error(msg.str());
+            << " at step " << time.step_number() << ", t = " << time.time();
+        throw RunFailed(msg.str(),
+                        "the output up to the previous step, the summary and the last checkpoint are intact; a "
+                        "finer 'geometry/refinement' keeps the cells less distorted, a lower 'mesh "
+                        "redistribution/mesh quality floor' lets the run go on");
       }
   }
 
@@ -309,11 +391,12 @@ namespace FluidSurface
   }
 
   void
-  FullModelScene::write_summary() const
+  FullModelScene::write_summary(const std::string &status) const
   {
     if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
     std::ostringstream text;
+    text << "status: " << status << '\n';
     diagnostics.write_summary(text, total_energy, time.step_number(), time.n_rejected_steps(), elapsed_wall_time());
     energy_control.write_summary(text);
     text << "LU factorizations: " << model.n_factorizations() << '\n';

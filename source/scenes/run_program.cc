@@ -36,7 +36,8 @@ Exit status: 0 success (or stopped after 'checkpoint/steps per run'), 1 a comput
     /**
      * Calls @p body and returns its exit status, or that of the exception it
      * throws: RunStopped → its own (its message on @p out if 0, else on
-     * @p err), InputError → 2, any other std::exception → 1.
+     * @p err), InputError → 2, any other std::exception → 1 (RunFailed: a
+     * computation that could not go on; its message on one line).
      */
     int
     exit_status_of(const std::function<int()> &body,
@@ -61,7 +62,8 @@ Exit status: 0 success (or stopped after 'checkpoint/steps per run'), 1 a comput
         }
       catch (const std::exception &exc)
         {
-          error_message(exc.what(), err, communicator);
+          // A deal.II exception's what() holds the source location and a stack trace: not for the screen.
+          error_message(one_line_message(exc, std::string::npos), err, communicator);
           return 1;
         }
     }

@@ -1,5 +1,6 @@
 #include <fluid_surface/io/checkpoint.h>
 #include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/io/run_stopped.h>
 #include <fluid_surface/time_stepping/time_stepper.h>
 
 #include <algorithm>
@@ -22,34 +23,37 @@ namespace FluidSurface
   TimeStepper::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("time stepping");
-    prm.declare_entry("end time", "1", Patterns::Double(0), "End time T of the run.");
+    prm.declare_entry("end time", "1", RealRange::at_least(0), "End time T ≥ 0 of the run.");
     prm.declare_entry("time step",
                       "1e-2",
-                      Patterns::Double(0, Patterns::Double::max_double_value),
-                      "Initial time step τ₀.");
+                      RealRange::at_least(1e-12),
+                      "Initial time step τ₀ ≥ 1e-12 (with adaptive = true: τ_min ≤ τ₀ ≤ τ_max).");
     prm.declare_entry("adaptive", "true", Patterns::Bool(), "Adapt τ: shrink on rejected steps, grow on easy ones.");
     prm.declare_entry("minimum time step",
                       "1e-7",
-                      Patterns::Double(0, Patterns::Double::max_double_value),
-                      "τ_min: a run that needs a smaller step stops with an error.");
+                      RealRange::at_least(1e-12),
+                      "τ_min ≥ 1e-12, τ_min ≤ τ_max: a run that needs a smaller step stops with an error.");
     prm.declare_entry("maximum time step",
                       "0.05",
-                      Patterns::Double(0, Patterns::Double::max_double_value),
-                      "τ_max: the largest step the controller takes.");
-    prm.declare_entry("growth factor", "1.25", Patterns::Double(1), "Factor by which τ grows after easy steps.");
+                      RealRange::at_least(1e-12),
+                      "τ_max ≥ 1e-12: the largest step the controller takes.");
+    prm.declare_entry("growth factor",
+                      "1.25",
+                      RealRange::above(1),
+                      "Factor > 1 by which τ grows after easy steps (up to τ_max).");
     prm.declare_entry("shrink factor",
                       "0.5",
-                      Patterns::Double(0, 1),
-                      "Factor by which τ shrinks after a rejected step.");
+                      RealRange::open(0, 1),
+                      "Factor in (0, 1) by which τ shrinks after a rejected step.");
     prm.declare_entry("easy steps before growth",
                       "5",
                       Patterns::Integer(1),
-                      "Number of consecutive accepted steps before τ grows.");
+                      "Number N ≥ 1 of consecutive accepted steps before τ grows.");
     prm.declare_entry("energy tolerance",
                       "1e-3",
-                      Patterns::Double(0),
-                      "ε_F: a step is rejected when F(t+τ) > F(t) + (ε_F·τ + 10⁻⁹)·|F(t)|, i.e. when the total energy "
-                      "rises faster than the relative rate ε_F (a rate, so that it does not shrink with τ: the "
+                      RealRange::at_least(0),
+                      "ε_F ≥ 0: a step is rejected when F(t+τ) > F(t) + (ε_F·τ + 10⁻⁹)·|F(t)|, i.e. when the total "
+                      "energy rises faster than the relative rate ε_F (a rate, so that it does not shrink with τ: the "
                       "space discretization is not exactly energy-consistent, see doc/scheme.md).");
     prm.leave_subsection();
   }
@@ -70,9 +74,15 @@ namespace FluidSurface
     if (tau_min > tau_max)
       throw_invalid_entry("time stepping/minimum time step",
                           prm.get("minimum time step"),
-                          "a value not larger than 'maximum time step'");
+                          "a value not larger than 'maximum time step' = " + prm.get("maximum time step"));
     if (tau > tau_max && adaptive)
-      throw_invalid_entry("time stepping/time step", prm.get("time step"), "τ₀ ≤ 'maximum time step'");
+      throw_invalid_entry("time stepping/time step",
+                          prm.get("time step"),
+                          "τ₀ ≤ 'maximum time step' = " + prm.get("maximum time step") + " (adaptive = true)");
+    if (tau < tau_min && adaptive)
+      throw_invalid_entry("time stepping/time step",
+                          prm.get("time step"),
+                          "τ₀ ≥ 'minimum time step' = " + prm.get("minimum time step") + " (adaptive = true)");
     prm.leave_subsection();
     current_time = 0;
     n_accepted = n_rejected = n_easy = 0;
@@ -101,16 +111,16 @@ namespace FluidSurface
   }
 
   void
-  TimeStepper::reject(const std::string &reason)
+  TimeStepper::reject(const std::string &reason, const std::string &advice)
   {
     ++n_rejected;
     n_easy = 0;
     if (!adaptive || tau * shrink < tau_min)
       {
         std::ostringstream msg;
-        msg << "step rejected at t = " << current_time << " with τ = " << tau << " (" << reason << ")"
-            << (adaptive ? "; τ would fall below 'minimum time step'" : "; 'adaptive' is off");
-        throw std::runtime_error(msg.str());
+        msg << "step " << n_accepted + 1 << " rejected at t = " << current_time << " with τ = " << tau << " ("
+            << reason << ")" << (adaptive ? "; τ would fall below 'minimum time step'" : "; 'adaptive' is off");
+        throw RunFailed(msg.str(), advice);
       }
     tau *= shrink;
   }

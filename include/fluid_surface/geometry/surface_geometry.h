@@ -57,6 +57,11 @@ namespace FluidSurface
       double               mesh_quality = 0;   ///< min over cells of σ_min/σ_max of the cell Jacobian
     };
 
+    /// The largest `refinement`: 6·4⁷ cells for the sphere (memory and time grow 4× per refinement).
+    static constexpr unsigned int max_refinement = 7;
+    /// The most cells a refined mesh may have (also for a gmsh mesh with more coarse cells).
+    static constexpr unsigned int max_cells = 6 * 16384;
+
     explicit SurfaceGeometry(const MPI_Comm communicator);
 
     static void

@@ -2,7 +2,11 @@
 #define fluid_surface_io_parameter_file_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/patterns.h>
+#include <deal.II/base/tensor.h>
 
+#include <limits>
+#include <memory>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -22,9 +26,81 @@ namespace FluidSurface
   };
 
   /**
+   * The pattern of every real-valued entry: a finite number in an interval whose ends are open or closed
+   * (an infinite end is open). Unlike Patterns::Double it refuses nan, inf, numbers that overflow or
+   * underflow a double, and open bounds such as Re > 0 need no separate check. Its description reads
+   * "[Finite number x with 0 < x ≤ 1]"; it is also the element pattern of lists of numbers.
+   */
+  class RealRange : public dealii::Patterns::PatternBase
+  {
+  public:
+    enum class End
+    {
+      open,
+      closed
+    };
+
+    RealRange(const double lower, const End lower_end, const double upper, const End upper_end);
+
+    /// Any finite x.
+    static RealRange
+    any();
+    /// x > @p lower (x > 0 by default).
+    static RealRange
+    above(const double lower = 0);
+    /// x ≥ @p lower (x ≥ 0 by default).
+    static RealRange
+    at_least(const double lower = 0);
+    /// @p lower ≤ x ≤ @p upper.
+    static RealRange
+    closed(const double lower, const double upper);
+    /// @p lower < x < @p upper.
+    static RealRange
+    open(const double lower, const double upper);
+    /// @p lower < x ≤ @p upper.
+    static RealRange
+    left_open(const double lower, const double upper);
+    /// @p lower ≤ x < @p upper.
+    static RealRange
+    right_open(const double lower, const double upper);
+
+    /// Whether @p x is finite and in the interval.
+    bool
+    contains(const double x) const;
+    /// The interval as a condition on x: "0 < x ≤ 1", "x > 0", "any finite x".
+    std::string
+    condition() const;
+
+    bool
+    match(const std::string &test_string) const override;
+    std::string
+    description(const OutputStyle style = Machine) const override;
+    std::unique_ptr<dealii::Patterns::PatternBase>
+    clone() const override;
+
+  private:
+    double lower, upper;
+    End    lower_end, upper_end;
+  };
+
+  /**
+   * The value of the entry @p name of the current subsection as a vector of three numbers (its pattern is
+   * a Patterns::List of length 3).
+   */
+  dealii::Tensor<1, 3>
+  get_vector(const dealii::ParameterHandler &prm, const std::string &name);
+
+  /**
+   * @p v / |v|, computed without overflow or underflow of |v| for any finite @p v; zero for v = 0.
+   */
+  dealii::Tensor<1, 3>
+  unit_vector(const dealii::Tensor<1, 3> &v);
+
+  /**
    * Reads @p filename into @p prm. Every failure of deal.II's parser (missing
    * file, unknown subsection or entry, a value that fails its pattern) becomes
-   * an InputError whose message names the file, the line and what was expected.
+   * an InputError whose message names the file, the line and what was expected; a value that fails its
+   * pattern as "FILE, line N: entry 'subsection/entry' = 'value': expected PATTERN".
    */
   void
   parse_parameter_file(dealii::ParameterHandler &prm, const std::string &filename);

@@ -8,10 +8,34 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace FluidSurface
 {
+  /**
+   * A factorization or solve of ReusedFactorizationSolver that failed (a singular or non-finite matrix,
+   * an Amesos/MUMPS error). what() is one line for the user ("the Amesos_Mumps factorization failed: …");
+   * details() is the solver's own report (the Trilinos exception and what Amesos printed), for the
+   * output directory's error.log, not for the screen.
+   */
+  class LinearSolverError : public std::runtime_error
+  {
+  public:
+    LinearSolverError(const std::string &summary, const std::string &details)
+      : std::runtime_error(summary)
+      , details_text(details)
+    {}
+    const std::string &
+    details() const
+    {
+      return details_text;
+    }
+
+  private:
+    std::string details_text;
+  };
+
   /**
    * A sparse LU factorization (Amesos) kept across time steps. A solve whose matrix was factorized is
    * direct; on the nearby matrices of later steps the kept factors are the right preconditioner of GMRES,
@@ -94,8 +118,8 @@ namespace FluidSurface
      * Solves @p system x = @p b. @p matrix is what is factorized: @p system itself, or its block when
      * @p system borders it. @p preconditioner is built from the factors by its initialize(SolverDirect &),
      * and its vmult() is the exact inverse of @p system when the factors are of @p matrix. @p x is the
-     * initial guess of GMRES. Throws what a failed factorization or solve throws (the next solve then
-     * factorizes again).
+     * initial guess of GMRES. A failed factorization or solve throws LinearSolverError (the next solve then
+     * factorizes again); what Amesos prints on std::cerr meanwhile goes into its details(), not on the screen.
      *
      * Instantiated for (TrilinosWrappers::SparseMatrix, MPI::Vector, FactorizationPreconditioner) and
      * (BorderedSystem, MPI::BlockVector, BorderedFactorizationPreconditioner).

@@ -52,7 +52,8 @@ namespace FluidSurface
     struct StepResult
     {
       bool         solved = false;
-      std::string  failure;
+      std::string  failure;         ///< why the step was not solved, one line
+      std::string  failure_details; ///< the linear solver's own report of the failure (for error.log)
       unsigned int linear_iterations = 0;
       double       gamma             = 0;
       double       dissipation_rate  = 0; ///< (2/Re)‖σ(u)‖² on S^m

@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 
 #include <ostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,26 @@ namespace FluidSurface
       angular_momentum
     };
 
+    /// solve() found no equilibrium: Newton failed near the sphere, or a continuation stalled.
+    class NoSolution : public std::runtime_error
+    {
+    public:
+      /// Where the solver stopped.
+      enum class Stage
+      {
+        near_sphere,    ///< Newton from the spheroid near v = 1 failed
+        reduced_volume, ///< the continuation from the sphere in v stalled at `reached`
+        rotation        ///< the continuation from rest in ω² (or L) stalled at `reached`
+      };
+      NoSolution(const Stage stage, const double reached, const std::string &message)
+        : std::runtime_error(message)
+        , stage(stage)
+        , reached(reached)
+      {}
+      Stage  stage;
+      double reached;
+    };
+
     /// The inputs of one equilibrium computation (the entries of `subsection equilibrium`).
     struct Parameters
     {
@@ -94,7 +115,7 @@ namespace FluidSurface
     /**
      * Computes the equilibrium. N starts at the given number of collocation intervals and is doubled (up to
      * max_collocation) while the virial identity, a consequence of the continuous equations that the
-     * discretization does not impose, fails by more than 1e-9. Throws std::runtime_error if Newton fails to
+     * discretization does not impose, fails by more than 1e-9. Throws NoSolution if Newton fails to
      * converge, lands on the other branch, or the continuation in ω stalls at a fold of the branch. At reduced
      * volume 1 the only admissible shape is the sphere, whose multipliers are not unique: it is returned with
      * p0 = γ = 0 (then ω must be 0).
@@ -254,6 +275,15 @@ namespace FluidSurface
    */
   int
   run_equilibrium_command(const std::string &parameter_file, std::ostream &out);
+
+  /**
+   * Solves @p equilibrium, whose parameters were read from `subsection equilibrium` of the parameter file;
+   * an AxisymmetricEquilibrium::NoSolution becomes an InputError that names the entry to change (the
+   * angular momentum or velocity when the rotation continuation stalls, the reduced volume when the
+   * continuation from the sphere stalls, area and Be when Newton fails near the sphere).
+   */
+  void
+  solve_equilibrium_of_entries(AxisymmetricEquilibrium &equilibrium);
 } // namespace FluidSurface
 
 #endif

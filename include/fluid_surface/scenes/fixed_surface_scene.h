@@ -110,6 +110,8 @@ namespace FluidSurface
     /// Wall time since run() started.
     dealii::Timer wall_timer;
 
+    unsigned int            current_step  = 0; ///< the step being computed (for the message of a failure)
+    double                  current_time  = 0;
     Problem                 problem       = Problem::manufactured_sphere;
     unsigned int            mode_number   = 2;
     double                  omega         = 1.0;

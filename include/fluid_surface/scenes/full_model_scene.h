@@ -64,16 +64,20 @@ namespace FluidSurface
     /// The energies of the solved step that is not yet accepted (the curvature of its surface is computed here).
     Energies
     candidate_energies();
-    /// Undoes the last step and shrinks τ for its retry (std::runtime_error with @p reason below τ_min).
+    /**
+     * Undoes the last step (of size @p tau, not solved or rejected for @p reason) and shrinks τ for its
+     * retry; RunFailed when τ would fall below τ_min. A non-empty @p solver_report (the linear solver's own
+     * account of a failure) goes to error.log.
+     */
     void
-    retry_step(const std::string &reason);
+    retry_step(const double tau, const std::string &reason, const std::string &solver_report);
     /// Makes the solved step of size @p tau the current state; τ for the next step as the @p energy check says.
     void
     accept_step(const double tau, const Energies &candidate, const EnergyStepController::Decision &energy);
     /// One statistics row and screen report of the accepted state.
     void
     record_step(const double tau, const FluidDeformableSurface::StepResult &step);
-    /// Throws std::runtime_error when the mesh quality fell below `mesh quality floor`.
+    /// Throws RunFailed when the mesh quality fell below `mesh quality floor`.
     void
     check_mesh_quality() const;
     /// Writes the VTU file of the current state.
@@ -88,9 +92,18 @@ namespace FluidSurface
      */
     void
     checkpoint_or_stop(const int signal);
-    /// Writes the file `summary` and prints it (without the wall time unless `report wall time`).
+    /**
+     * Writes the file `summary`, whose first line is `status: @p status` ("completed", or "stopped at t = …:
+     * reason"), and prints it (without the wall time unless `report wall time`).
+     */
     void
-    write_summary() const;
+    write_summary(const std::string &status) const;
+    /// The summary of a run that stops before its end time because of @p reason (rank 0, never throws).
+    void
+    write_summary_of_stopped_run(const std::string &reason);
+    /// Appends @p text to `error.log` in the output directory (rank 0).
+    void
+    log_error(const std::string &text) const;
     /// Writes the wall time per section (file `timing`; the screen if `report wall time`).
     void
     write_timing();

@@ -88,9 +88,12 @@ namespace FluidSurface
       tau = std::min(std::max(new_tau, tau_min), tau_max);
     }
 
-    /// Shrinks τ; throws std::runtime_error with @p reason when τ falls below τ_min.
+    /**
+     * Shrinks τ after a rejected step. When τ would fall below τ_min (or adaptive is off) the run cannot go
+     * on: throws RunFailed, whose reason names the step, t, τ and @p reason, followed by @p advice.
+     */
     void
-    reject(const std::string &reason);
+    reject(const std::string &reason, const std::string &advice);
 
     /// The state a checkpoint needs to continue bit for bit.
     struct State
