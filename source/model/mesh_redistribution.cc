@@ -24,13 +24,13 @@ namespace FluidSurface
                       "(doc/scheme.md). Needs lumped = true.");
     prm.declare_entry("shear stiffness",
                       "1",
-                      Patterns::Double(0),
-                      "μ of law reference: the weight of the shear energy ∫_{S₀}(½|∇_{S₀}Y|² − J), zero iff the "
+                      RealRange::closed(0, 1e6),
+                      "μ, 0 ≤ μ ≤ 1e6, of law reference: the weight of the shear energy ∫_{S₀}(½|∇_{S₀}Y|² − J), zero iff the "
                       "map from the initial surface S₀ is conformal.");
     prm.declare_entry("area stiffness",
                       "1",
-                      Patterns::Double(0),
-                      "K of law reference: the weight of the area energy ½∫_{S₀}(J − 1)², J the element area "
+                      RealRange::closed(0, 1e6),
+                      "K, 0 ≤ K ≤ 1e6, of law reference: the weight of the area energy ½∫_{S₀}(J − 1)², J the element area "
                       "over its initial area (normalized by the total area).");
     prm.declare_entry("lumped",
                       "true",
@@ -39,22 +39,26 @@ namespace FluidSurface
     prm.declare_entry("relaxation time",
                       "0.05",
                       RealRange::closed(0, 1e6),
-                      "T_r, 0 ≤ T_r ≤ 1e6, of the tangential damping (T_r/τ)(P̃(Y − X^m), η)_h added to the BGN equation: "
-                      "the mesh relaxes towards the BGN distribution on the time scale T_r h² instead of "
-                      "jumping there within one step, so that steps τ → 0 change nothing. 0: plain BGN.");
+                      "T_r, 0 ≤ T_r ≤ 1e6, of the tangential damping (T_r/τ)(P̃(Y − W), η)_h (W = X^m + τR for law "
+                      "bgn, the carried position for law reference): the mesh relaxes towards the minimizer of its "
+                      "law on the time scale T_r instead of jumping there within one step, so that steps τ → 0 "
+                      "change nothing. 0: no damping (plain BGN).");
     prm.declare_entry("follow rigid motion",
                       "true",
                       Patterns::Bool(),
-                      "The tangential damping relaxes the nodes towards X^m + τR instead of X^m, R = U + Ω × (x − x_c) "
-                      "the rigid motion of the shape (its normal part R·ν fits u^m·ν in L²): a rotating or "
-                      "translating body carries its mesh along instead of moving through it, while a body spinning "
-                      "about its own axis of symmetry (R·ν ≡ 0) leaves its mesh in place. No effect when T_r = 0.");
+                      "The mesh follows R = U + Ω × (x − x_c), the rigid motion of the shape (its normal part R·ν "
+                      "fits u^m·ν in L²): law bgn damps the nodes towards X^m + τR (no effect when T_r = 0), law "
+                      "reference carries them by the exact flow of R and solves the step in that frame. A rotating "
+                      "or translating body carries its mesh along instead of moving through it, while a body "
+                      "spinning about its own axis of symmetry (R·ν ≡ 0) leaves its mesh in place.");
     prm.declare_entry("rigid motion cutoff",
                       "0.01",
-                      RealRange::at_least(0),
-                      "ε ≥ 0 of the fit of R: min ∫(u·ν − R·ν)² + ε|S||c|², c the coefficients of R in the basis e_d, "
-                      "e_d × (x − x_c)/R_g (R_g the radius of gyration); rigid motions with ∫(R·ν)² ≪ ε|S||c|² are "
-                      "not followed.");
+                      RealRange::left_open(0, 1e6),
+                      "ε, 0 < ε ≤ 1e6, of the fit of R, c the coefficients of R in the basis e_d, e_d × (x − x_c)/R_g "
+                      "(R_g the radius of gyration), G the Gram matrix of their normal parts: law bgn minimizes "
+                      "∫(u·ν − R·ν)² + ε|S||c|²; law reference fits the eigenmodes of G with eigenvalue ≥ 2ε|S| "
+                      "exactly and drops those ≤ ε|S| (a smooth step between). Rigid motions that hardly move the "
+                      "surface (the spin of an axisymmetric body) are not followed.");
     prm.declare_entry("mesh quality floor",
                       "0.02",
                       RealRange::closed(0, 1),
@@ -75,6 +79,10 @@ namespace FluidSurface
     rigid_motion_cutoff = prm.get_double("rigid motion cutoff");
     mesh_quality_floor  = prm.get_double("mesh quality floor");
     prm.leave_subsection();
+    if (law == Law::reference && shear_stiffness == 0 && area_stiffness == 0 && relaxation_time == 0)
+      throw_invalid_entry("mesh redistribution/shear stiffness", "0",
+                          "μ > 0, K > 0 or T_r > 0 with law = reference (otherwise nothing fixes the tangential "
+                          "position of the nodes)");
     if (law == Law::reference && !lumped)
       throw_invalid_entry("mesh redistribution/lumped", "false", "true with law = reference (its tangential "
                                                                   "projection acts at the nodes)");
