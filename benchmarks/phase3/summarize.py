@@ -24,7 +24,8 @@ except OSError:
 outcome = "completed" if status == "0" else ("wall-time limit" if status == "124" else (message.split("error: ", 1)[-1] or f"exit {status}"))
 print(",".join([name, status, f"{t[-1]:.6g}", str(len(rows) - 1), summary.get("rejected steps", "?"), summary.get("t_sym_1e-4", "?"), summary.get("t_sym_1e-2", "?"), f"{statistics.median(tau):.3g}",
                 f"{min(tau):.3g}", f"{max(rises, default=0):.3g}", f"{min(col['mesh quality']):.3g}",
-                f"{drift(col['area']):.2e}", f"{drift(col['volume']):.2e}", f"{drift(L):.2e}", f"{F[-1]:.8g}",
+                summary.get("max area drift", f"{drift(col['area']):.2e}"), summary.get("max volume drift", f"{drift(col['volume']):.2e}"),
+                summary.get("max angular momentum drift", f"{drift(L):.2e}"), f"{F[-1]:.8g}",
                 f"{col['bending energy'][-1]:.8g}", f"{col['angular velocity'][-1]:.6g}", f"{col['rigid fraction'][-1]:.4f}",
                 f"{col['tilt angle'][-1]:.4g}", f"{max(col['symmetry deviation']):.3g}", f"{float(wall):.0f}",
                 '"' + outcome.replace('"', "'") + '"']))
