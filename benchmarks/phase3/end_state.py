@@ -5,13 +5,9 @@ largest inertia, F = W + |L₀|²/(2 I_max)."""
 import math
 import sys
 
-names, rows = [], []
-for line in open(sys.argv[1]):
-    if line.startswith("# "):
-        names.append(line.split(": ", 1)[1].strip())
-    elif line.strip():
-        rows.append([float(x) for x in line.split()])
-c = {n: [r[i] for r in rows] for i, n in enumerate(names)}
+import statistics_columns
+
+c = statistics_columns.read(sys.argv[1])
 end = -1
 L = [c[f"angular momentum {d}"][end] for d in "xyz"]
 L0 = [c[f"angular momentum {d}"][0] for d in "xyz"]

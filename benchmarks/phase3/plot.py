@@ -3,6 +3,8 @@ import glob
 import os
 import sys
 
+import statistics_columns
+
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
@@ -10,13 +12,7 @@ import matplotlib.pyplot as plt
 directory, out = sys.argv[1:3]
 fig, axes = plt.subplots(2, 2, figsize=(11, 7), sharex=True)
 for path in sorted(glob.glob(os.path.join(directory, "*.statistics"))):
-    names, rows = [], []
-    for line in open(path):
-        if line.startswith("# "):
-            names.append(line.split(": ", 1)[1].strip())
-        elif line.strip():
-            rows.append([float(x) for x in line.split()])
-    c = {n: [r[i] for r in rows] for i, n in enumerate(names)}
+    c = statistics_columns.read(path)
     label = os.path.basename(path).replace(".statistics", "")
     t = c["time"]
     axes[0][0].plot(t, c["total energy"], label=label)

@@ -2,14 +2,10 @@
 import statistics
 import sys
 
+import statistics_columns
+
 path, name, status, wall, message = sys.argv[1:6]
-names, rows = [], []
-for line in open(path):
-    if line.startswith("# "):
-        names.append(line.split(": ", 1)[1].strip())
-    elif line.strip():
-        rows.append([float(x) for x in line.split()])
-col = {n: [r[i] for r in rows] for i, n in enumerate(names)}
+col = statistics_columns.read(path)
 F, t, tau = col["total energy"], col["time"], col["tau"][1:] or [0]
 rises = [(b - a) / (s * abs(a)) for a, b, s in zip(F, F[1:], tau) if b > a]
 L = [sum(col[f"angular momentum {d}"][k] ** 2 for d in "xyz") ** 0.5 for k in range(len(F))]
@@ -22,7 +18,7 @@ try:
 except OSError:
     pass
 outcome = "completed" if status == "0" else ("wall-time limit" if status == "124" else (message.split("error: ", 1)[-1] or f"exit {status}"))
-print(",".join([name, status, f"{t[-1]:.6g}", str(len(rows) - 1), summary.get("rejected steps", "?"), summary.get("t_sym_1e-4", "?"), summary.get("t_sym_1e-2", "?"), f"{statistics.median(tau):.3g}",
+print(",".join([name, status, f"{t[-1]:.6g}", str(len(t) - 1), summary.get("rejected steps", "?"), summary.get("t_sym_1e-4", "?"), summary.get("t_sym_1e-2", "?"), f"{statistics.median(tau):.3g}",
                 f"{min(tau):.3g}", f"{max(rises, default=0):.3g}", f"{min(col['mesh quality']):.3g}",
                 summary.get("max area drift", f"{drift(col['area']):.2e}"), summary.get("max volume drift", f"{drift(col['volume']):.2e}"),
                 summary.get("max angular momentum drift", f"{drift(L):.2e}"), f"{F[-1]:.8g}",
