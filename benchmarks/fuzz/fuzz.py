@@ -250,7 +250,9 @@ def run_case(binary, work, scene, settings, timeout):
 def classify(path, scene, status, stderr, summary):
     lines = [l for l in stderr.splitlines() if l.strip()]
     first = lines[0] if lines else ""
-    dump = any(k in stderr for k in ("Amesos", "Stacktrace", "--------", "An error occurred in line"))
+    # Traces of a raw solver report or a deal.II exception with its stack trace.
+    dump = any(k in stderr for k in ("Amesos_Mumps :", "Amesos_Klu :", "INFOG(", "Stacktrace", "--------",
+                                     "An error occurred in line"))
     if status == "timeout":
         return "timeout"
     if status == 0:
@@ -282,9 +284,13 @@ def main():
     parser.add_argument("--timeout", type=float, default=30)
     parser.add_argument("--only", default="")
     parser.add_argument("--quick", action="store_true", help="the first scene of each entry only")
+    parser.add_argument("--replay", default="", help="run the cases of this results.csv with --binary (e.g. an "
+                        "older build) and write them with its outcomes to --results, for a before/after comparison")
     args = parser.parse_args()
     binary, source = os.path.abspath(args.binary), os.path.abspath(args.source)
     os.makedirs(args.work, exist_ok=True)
+    if args.replay:
+        return replay(binary, source, args)
 
     entries = read_entries(binary)
     scenes = base_scenes(source)
@@ -329,6 +335,36 @@ def main():
     print("entries fuzzed: %d of %d; cases: %d; %s" % (n_entries, len(entries), len(rows),
           ", ".join("%s %d" % kv for kv in sorted(counts.items()))))
     return 1 if counts.get("FAIL", 0) else 0
+
+
+def replay(binary, source, args):
+    """The cases of an earlier results.csv, run with @p binary; both outcomes side by side."""
+    scenes = base_scenes(source)
+    with open(args.replay) as f:
+        rows = list(csv.reader(f))[1:]
+    out = []
+    for scene, path, value, status, seconds, outcome, message in rows:
+        b_status, b_seconds, _, b_stderr, b_summary = run_case(binary, args.work, scene, {**scenes[scene], path: value},
+                                                               args.timeout)
+        b_outcome = classify(path, scene, b_status, b_stderr, b_summary)
+        b_first = next((l for l in b_stderr.splitlines() if l.strip()), "")
+        if b_status == "timeout":
+            b_first = "(cut after %g s)" % args.timeout
+        out.append([scene, path, value, b_status, "%.1f" % b_seconds, b_outcome, b_first, status, seconds, outcome,
+                    message])
+        if str(b_status) != str(status):
+            print("%-17s %-45s %-22r before: exit %-7s %-8s after: exit %-7s %s" % (scene, path, value, b_status,
+                                                                                    b_outcome, status, outcome),
+                  flush=True)
+    with open(args.results, "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["scene", "entry", "value", "before: exit status", "before: seconds", "before: outcome",
+                         "before: first line of the message", "exit status", "seconds", "outcome",
+                         "first line of the message"])
+        writer.writerows(out)
+    changed = sum(1 for r in out if str(r[3]) != str(r[7]))
+    print("cases replayed: %d; exit status changed in %d" % (len(out), changed))
+    return 0
 
 
 if __name__ == "__main__":

@@ -23,7 +23,11 @@ namespace FluidSurface
   TimeStepper::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("time stepping");
-    prm.declare_entry("end time", "1", RealRange::at_least(0), "End time T ≥ 0 of the run.");
+    prm.declare_entry("end time",
+                      "1",
+                      RealRange::at_least(0),
+                      "End time T ≥ 0 of the run: 0 (the initial state only) or at least τ_min (a shorter first "
+                      "step would be below 'minimum time step').");
     prm.declare_entry("time step",
                       "1e-2",
                       RealRange::at_least(1e-12),
@@ -71,6 +75,10 @@ namespace FluidSurface
     shrink                    = prm.get_double("shrink factor");
     easy_steps                = prm.get_integer("easy steps before growth");
     relative_energy_tolerance = prm.get_double("energy tolerance");
+    if (end_time > 0 && end_time < tau_min)
+      throw_invalid_entry("time stepping/end time",
+                          prm.get("end time"),
+                          "0 or at least 'minimum time step' = " + prm.get("minimum time step"));
     if (tau_min > tau_max)
       throw_invalid_entry("time stepping/minimum time step",
                           prm.get("minimum time step"),
