@@ -679,9 +679,10 @@ namespace FluidSurface
                       "equal to 'collocation points' keeps N fixed.");
     prm.declare_entry("output points", "401", Integer(2, 100000),
                       "Number of rows of the CSV, 2 to 100000, equispaced in arc length s from pole to pole.");
-    prm.declare_entry("Newton tolerance", "1e-12", RealRange::closed(1e-16, 1e-2),
+    prm.declare_entry("Newton tolerance", "1e-12", RealRange::closed(1e-14, 1e-6),
                       "Newton stops when the largest update relative to the largest unknown is below this "
-                      "(1e-16 to 0.01).");
+                      "(1e-14 to 1e-6: below, rounding keeps Newton from converging; above, the start near the "
+                      "sphere is not accepted as converged).");
     prm.leave_subsection();
   }
 
@@ -1149,7 +1150,11 @@ namespace FluidSurface
       {
         using Stage                                  = AxisymmetricEquilibrium::NoSolution::Stage;
         const AxisymmetricEquilibrium::Parameters &p = equilibrium.parameters();
-        const auto text = [](const double x) { return dealii::Utilities::to_string(x); };
+        const auto text = [](const double x) {
+          std::ostringstream out;
+          out << std::setprecision(10) << x;
+          return out.str();
+        };
         const std::string branch = (p.branch == AxisymmetricEquilibrium::Branch::prolate ? "prolate" : "oblate");
         const std::string where  = " on the " + branch + " branch at A = " + text(p.area) +
                                   ", v = " + text(p.reduced_volume) + ", Be = " + text(p.bending_number);
