@@ -7,6 +7,7 @@
 #include <fluid_surface/model/conservation_projection.h>
 
 #include <cmath>
+#include <tuple>
 
 namespace FluidSurface
 {
@@ -81,19 +82,26 @@ namespace FluidSurface
                             ArrayView<double>(sums.data(), sums.size()));
         // κ = Hν is the weak Δ_S X (H < 0 on an outward sphere), so dA = −∫Hδ·ν.
         const double dV_da = sums[0], dV_db = sums[1], dA_da = -sums[1], dA_db = -sums[3];
-        double       a = 0, b = 0;
-        // On a sphere (H constant) the two modes change A and V alike: the 2 × 2 system is singular, and only
-        // V is held (A is then at its minimum for V, and its drift of second order).
+        // V alone: the mode ñ.
+        const auto hold_volume_only = [&]() { return std::make_pair(-volume_error / dV_da, 0.0); };
+        auto [a, b] = hold_volume ? hold_volume_only() : std::make_pair(-area_error / dA_da, 0.0);
+        // A and V: the modes ñ and Hñ. Near a sphere (H nearly constant) the two modes change A and V almost
+        // alike, and the A-fixing part of the correction, of size |δA|/A · R / s for a relative spread s of
+        // H, grows without bound as s → 0 (at s = 0 the system is singular, and A is at its minimum for V).
+        // The pair is used only while the correction stays within 100 times the errors' own scale; otherwise
+        // V alone is held (A's drift is then of second order).
         const double det = dV_da * dA_db - dV_db * dA_da;
-        if (hold_volume && std::abs(det) > 1e-8 * std::abs(dV_da * dA_db))
+        if (hold_volume && det != 0)
           {
-            a = -(dA_db * volume_error - dV_db * area_error) / det;
-            b = -(-dA_da * volume_error + dV_da * area_error) / det;
+            const double pair_a = -(dA_db * volume_error - dV_db * area_error) / det;
+            const double pair_b = -(-dA_da * volume_error + dV_da * area_error) / det;
+            const double scale  = std::sqrt(m.area / (4 * numbers::PI)) *
+                                 (std::abs(area_error) / m.area + std::abs(volume_error) / std::abs(m.volume));
+            VectorType correction(owned, comm);
+            correction.add(pair_a, normal, pair_b, curved);
+            if (correction.linfty_norm() <= 100 * scale)
+              std::tie(a, b) = std::make_pair(pair_a, pair_b);
           }
-        else if (hold_volume)
-          a = -volume_error / dV_da;
-        else
-          a = -area_error / dA_da;
         VectorType position(owned, comm);
         position = geometry.position();
         position.add(a, normal, b, curved);

@@ -276,6 +276,7 @@ namespace FluidSurface
                                     "equilibrium/*",
                                     "diagnostics/*",
                                     "checkpoint/*",
+                                    "steady state/*",
                                     "time stepping/adaptive",
                                     "time stepping/minimum time step",
                                     "time stepping/maximum time step",

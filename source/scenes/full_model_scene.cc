@@ -36,6 +36,7 @@ namespace FluidSurface
     model.parse_parameters(prm, time.maximum_step_size());
     diagnostics.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
+    steady_state.parse_parameters(prm);
   }
 
   bool
@@ -102,11 +103,21 @@ namespace FluidSurface
                 continue;
               }
             accept_step(tau, candidate, energy);
-            record_step(tau, step);
+            const Diagnostics::Values values = record_step(tau, step);
             check_mesh_quality();
-            if (output.due(time.time()) || !time.before_end())
+            const bool steady = steady_state.reached(time.time(), total_energy, kinetic_energy_excess(values));
+            if (output.due(time.time()) || !time.before_end() || steady)
               write_output();
             ++steps_this_run;
+            if (steady)
+              {
+                std::ostringstream reached;
+                reached << "reached at t = " << std::setprecision(8) << time.time() << ": "
+                        << steady_state.description();
+                steady_state_report = reached.str();
+                pcout << "-- steady state " << steady_state_report << std::endl;
+                break;
+              }
             checkpoint_or_stop(stop_signals.received());
           }
       }
@@ -253,6 +264,7 @@ namespace FluidSurface
     statistics.resume(output.directory() + "statistics", Utilities::MPI::this_mpi_process(communicator), data);
     total_energy = data.get_double("simulation/total energy");
     energy_control.load(data);
+    steady_state.load(data);
     wall_time_before_restart = data.get_double("simulation/wall time");
     willmore                 = geometry.compute_curvature();
     // The restored fields must reproduce the energy recorded with them (to rounding: the rank count may differ).
@@ -272,7 +284,13 @@ namespace FluidSurface
           << ", t = " << time.time() << std::endl;
   }
 
-  void
+  double
+  FullModelScene::kinetic_energy_excess(const Diagnostics::Values &v)
+  {
+    return v.kinetic_energy - v.angular_momentum.norm_square() / (2 * v.eigenvalues[2]);
+  }
+
+  Diagnostics::Values
   FullModelScene::record_step(const double tau, const FluidDeformableSurface::StepResult &step)
   {
     TimerOutput::Scope        section(computing_timer, "diagnostics");
@@ -319,6 +337,7 @@ namespace FluidSurface
           pcout << "    " << std::setprecision(3) << per_step << " s/step, ETA " << static_cast<long>(eta) << " s\n";
         pcout << std::flush;
       }
+    return v;
   }
 
   void
@@ -351,6 +370,7 @@ namespace FluidSurface
     data.set("simulation/geometry", geometry.description());
     data.set("simulation/total energy", total_energy);
     energy_control.save(data);
+    steady_state.save(data);
     data.set("simulation/wall time", elapsed_wall_time());
     model.save(data);
     time.save(data);
@@ -399,6 +419,8 @@ namespace FluidSurface
     text << "status: " << status << '\n';
     diagnostics.write_summary(text, total_energy, time.step_number(), time.n_rejected_steps(), elapsed_wall_time());
     energy_control.write_summary(text);
+    if (steady_state.enabled())
+      text << "steady state: " << (steady_state_report.empty() ? "not reached" : steady_state_report) << '\n';
     text << "LU factorizations: " << model.n_factorizations() << '\n';
     {
       std::ofstream summary(output.directory() + "summary.tmp");

@@ -9,6 +9,7 @@
 #include <fluid_surface/scenes/full_model_scene.h>
 #include <fluid_surface/scenes/geometry_scene.h>
 #include <fluid_surface/scenes/simulation.h>
+#include <fluid_surface/time_stepping/steady_state.h>
 #include <fluid_surface/time_stepping/time_stepper.h>
 
 #include <fstream>
@@ -46,6 +47,7 @@ namespace FluidSurface
     FluidDeformableSurface::declare_parameters(prm);
     Diagnostics::declare_parameters(prm);
     Checkpoint::declare_parameters(prm);
+    SteadyState::declare_parameters(prm);
   }
 
   void

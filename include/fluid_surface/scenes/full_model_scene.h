@@ -9,6 +9,7 @@
 #include <fluid_surface/postprocess/diagnostics.h>
 #include <fluid_surface/scenes/scene.h>
 #include <fluid_surface/time_stepping/energy_step_controller.h>
+#include <fluid_surface/time_stepping/steady_state.h>
 #include <fluid_surface/time_stepping/time_stepper.h>
 
 #include <string>
@@ -74,9 +75,12 @@ namespace FluidSurface
     /// Makes the solved step of size @p tau the current state; τ for the next step as the @p energy check says.
     void
     accept_step(const double tau, const Energies &candidate, const EnergyStepController::Decision &energy);
-    /// One statistics row and screen report of the accepted state.
-    void
+    /// One statistics row and screen report of the accepted state; returns its measures.
+    Diagnostics::Values
     record_step(const double tau, const FluidDeformableSurface::StepResult &step);
+    /// K − |L|²/(2λ₃) of @p v: zero only for a rigid rotation about the axis of largest inertia.
+    static double
+    kinetic_energy_excess(const Diagnostics::Values &v);
     /// Throws RunFailed when the mesh quality fell below `mesh quality floor`.
     void
     check_mesh_quality() const;
@@ -125,6 +129,9 @@ namespace FluidSurface
     FluidDeformableSurface model;
     Diagnostics            diagnostics;
     Checkpoint             checkpoint;
+    SteadyState            steady_state;
+    /// How the end state was reached (empty until then).
+    std::string steady_state_report;
 
     bool         resuming = false;
     double       total_energy = 0;             ///< F = kinetic + bending energy of the accepted state

@@ -1,0 +1,70 @@
+#ifndef fluid_surface_time_stepping_steady_state_h
+#define fluid_surface_time_stepping_steady_state_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace FluidSurface
+{
+  class CheckpointData;
+
+  /**
+   * When a run of scene full has reached its end state (`subsection steady
+   * state`): the total energy F is flat over the window T_w,
+   * |F(t) − F(t − T_w)| < δ T_w |F(t)|, and the motion is the one a terminal
+   * state must have. Without external torque the angular momentum L is
+   * conserved and the kinetic energy K ≥ |L|²/(2λ₃) (λ₃ the largest inertia
+   * eigenvalue), with equality only for a rigid rotation about the axis of
+   * largest inertia; the excess K − |L|²/(2λ₃) < ε_K |F| is required too. A
+   * flat F alone also holds in a metastable rotating state (the prolate
+   * spinning about its long axis before its symmetry breaks), whose excess
+   * is of the order of K. The samples of F inside the window are part of a
+   * checkpoint.
+   */
+  class SteadyState
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Whether the check is on (δ > 0).
+    bool
+    enabled() const
+    {
+      return energy_rate_tolerance > 0;
+    }
+
+    /**
+     * Records the accepted state at @p time with total energy @p total_energy and kinetic energy excess
+     * @p kinetic_excess = K − |L|²/(2λ₃); returns whether the end state is reached.
+     */
+    bool
+    reached(const double time, const double total_energy, const double kinetic_excess);
+
+    /// The measures of the last reached() as one line, for the screen and the summary.
+    std::string
+    description() const;
+
+    void
+    save(CheckpointData &data) const;
+    void
+    load(const CheckpointData &data);
+
+  private:
+    double energy_rate_tolerance     = 0;
+    double window                    = 1;
+    double kinetic_excess_tolerance  = 1e-4;
+    double last_energy_rate          = 0;
+    double last_kinetic_excess       = 0;
+    /// (t, F), at least T_w/20 apart, the oldest at or before t − T_w.
+    std::vector<std::pair<double, double>> samples;
+  };
+} // namespace FluidSurface
+
+#endif
