@@ -2,7 +2,6 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/numerics/vector_tools.h>
 
 #include <fluid_surface/model/conservation_projection.h>
 
@@ -191,12 +190,28 @@ namespace FluidSurface
       }
     inverse.invert(gram);
     inverse.vmult(c, defect);
-    VectorType correction(dofs.locally_owned_dofs(), geometry.get_communicator());
-    VectorTools::interpolate(geometry.mapping(),
-                             dofs,
-                             RigidVelocity(c, dofs.get_fe().n_components()),
-                             correction,
-                             dofs.get_fe().component_mask(velocity));
+    // The rigid field at the velocity nodes (VectorTools::interpolate with a component mask left the third
+    // component at zero on this FESystem in deal.II 9.4, so ∫u_z and L_x, L_y were not corrected).
+    const RigidVelocity              rigid(c, 3);
+    const FiniteElement<2, 3>       &fe = dofs.get_fe();
+    FEValues<2, 3>                   at_nodes(geometry.mapping(), fe, Quadrature<2>(fe.get_unit_support_points()),
+                                              update_quadrature_points);
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    const IndexSet                  &owned = dofs.locally_owned_dofs();
+    VectorType                       correction(owned, geometry.get_communicator());
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          at_nodes.reinit(cell);
+          cell->get_dof_indices(indices);
+          for (unsigned int i = 0; i < indices.size(); ++i)
+            {
+              const unsigned int component = fe.system_to_component_index(i).first;
+              if (component < 3 && owned.is_element(indices[i]))
+                correction[indices[i]] = rigid.value(at_nodes.quadrature_point(i), component);
+            }
+        }
+    correction.compress(VectorOperation::insert);
     state += correction;
     return defect.l2_norm();
   }
