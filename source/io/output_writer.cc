@@ -68,10 +68,11 @@ namespace FluidSurface
     prm.declare_entry("format",
                       "vtu",
                       Patterns::Selection("vtu|hdf5"),
-                      "File format of the output steps: vtu writes solution-NNNNN.vtu and the time series "
-                      "solution.pvd; hdf5 writes solution-NNNNN.h5 (parallel HDF5, the same fields and curved "
-                      "sub-cells, shared vertices stored once) and the time series solution.xdmf. ParaView "
-                      "opens either series (solution.xdmf with its XDMF reader).");
+                      "File format of the output steps: vtu writes solution-NNNNN.vtu (single precision) and "
+                      "the time series solution.pvd; hdf5 writes solution-NNNNN.h5 (parallel HDF5, double "
+                      "precision, the same fields and curved sub-cells, a vertex shared by cells of one MPI rank "
+                      "stored once) and the time series solution.xdmf. ParaView opens either series "
+                      "(solution.xdmf with its XDMF reader).");
     prm.declare_entry("subdivisions",
                       "2",
                       Patterns::Integer(1, 8),
