@@ -30,22 +30,16 @@ namespace
       std::printf("output_hdf5.py %s failed (status %d)\n", arguments.c_str(), status);
   }
 
+  /// Runs R with @p overrides and prints its status, its messages and the steps solution.xdmf lists.
   void
-  flip_byte_of_newest_slot(const std::string &directory)
+  run_and_list(const char *what, const CheckpointTest::Overrides &overrides)
   {
-    if (!CheckpointTest::is_root())
-      return;
-    std::ifstream last(directory + "/checkpoint/last");
-    std::string   slot;
-    last >> slot;
-    std::fstream f(directory + "/checkpoint/" + slot + "/fields", std::ios::in | std::ios::out | std::ios::binary);
-    f.seekg(0, std::ios::end);
-    const auto size = static_cast<long>(f.tellg());
-    f.seekg(size / 2);
-    char c;
-    f.get(c);
-    f.seekp(size / 2);
-    f.put(static_cast<char>(c ^ 0x10));
+    const CheckpointTest::Outcome r = CheckpointTest::run("R", overrides);
+    std::printf("R %s: status %d\n%s", what, r.status, CheckpointTest::messages(r.screen).c_str());
+    if (!r.message.empty())
+      std::printf("  %s\n", r.message.c_str());
+    std::fflush(stdout);
+    python("series R");
   }
 } // namespace
 
@@ -77,26 +71,13 @@ main(int argc, char **argv)
                        {"checkpoint/resume", "auto"}};
   Overrides first = resumed;
   first.push_back({"checkpoint/steps per run", "3"});
-  const Outcome r1 = run("R", first);
-  std::printf("R stopped: status %d\n  %s\n", r1.status, r1.message.c_str());
-  std::fflush(stdout);
-  python("series R");
-  const Outcome r2 = run("R", resumed);
-  std::printf("R resumed: status %d\n%s", r2.status, messages(r2.screen).c_str());
-  std::fflush(stdout);
-  python("series R");
-
-  flip_byte_of_newest_slot("R");
+  run_and_list("stopped after step 3", first);
+  run_and_list("resumed", resumed);
+  if (is_root())
+    flip_byte(newest_slot("R") + "/fields");
   MPI_Barrier(MPI_COMM_WORLD);
   Overrides shorter = resumed;
   shorter.push_back({"time stepping/end time", "0.04"});
-  const Outcome r3 = run("R", shorter);
-  std::printf("R resumed from the older slot with end time 0.04: status %d\n%s", r3.status,
-              messages(r3.screen).c_str());
-  std::fflush(stdout);
-  python("series R");
-  const Outcome r4 = run("R", resumed);
-  std::printf("R resumed to t = 0.06: status %d\n%s", r4.status, messages(r4.screen).c_str());
-  std::fflush(stdout);
-  python("series R");
+  run_and_list("resumed from the older slot with end time 0.04", shorter);
+  run_and_list("resumed to t = 0.06", resumed);
 }

@@ -18,6 +18,8 @@
 #include <filesystem>
 #include <string>
 
+#include "parameter_overrides.h"
+
 using namespace FluidSurface;
 
 int
@@ -29,14 +31,13 @@ main(int argc, char **argv)
   dealii::ParameterHandler                 prm;
   Simulation::declare_parameters(prm);
   const unsigned int writes = std::stoul(argv[1]);
+  Overrides          overrides;
   for (int a = 2; a < argc; ++a)
     {
       const std::string arg = argv[a];
-      const auto        eq = arg.find('='), slash = arg.rfind('/', eq);
-      prm.enter_subsection(arg.substr(0, slash));
-      prm.set(arg.substr(slash + 1, eq - slash - 1), arg.substr(eq + 1));
-      prm.leave_subsection();
+      overrides.emplace_back(arg.substr(0, arg.find('=')), arg.substr(arg.find('=') + 1));
     }
+  set_overrides(prm, overrides);
   SurfaceGeometry geometry(comm);
   OutputWriter    output;
   geometry.parse_parameters(prm);

@@ -3,7 +3,7 @@
 # file and the time series) and its bytes on disk, VTU (.vtu + its share of solution.pvd) against HDF5 (.h5 + its
 # share of solution.xdmf), on the ellipsoid [0.61, 0.61, 2.02] (Q2 geometry, 2×2 sub-cells per cell, 14 field
 # components as in scene full), refinements 4 and 5, 1 and 2 MPI ranks; WRITES (default 7) writes per case,
-# the median reported. --quick: refinement 3 only, 3 writes.
+# the median reported. --quick: refinement 3 only, 3 writes (overwrites results.csv and the plot too).
 # Usage (from the repository root): benchmarks/output_formats/run.sh [--quick]
 #   BUILD_DIR (default: build) is a Release build directory of the project; the library is built there if missing,
 #   the driver in $BUILD_DIR/benchmark-output-formats. Writes benchmarks/output_formats/results.csv.
