@@ -7,31 +7,6 @@
 
 #include <filesystem>
 
-namespace
-{
-  std::string
-  newest_slot(const std::string &directory)
-  {
-    std::ifstream last(directory + "/checkpoint/last");
-    std::string   slot;
-    last >> slot;
-    return directory + "/checkpoint/" + slot;
-  }
-
-  void
-  flip_byte(const std::string &file)
-  {
-    std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
-    f.seekg(0, std::ios::end);
-    const auto size = static_cast<long>(f.tellg());
-    f.seekg(size / 2);
-    char c;
-    f.get(c);
-    f.seekp(size / 2);
-    f.put(static_cast<char>(c ^ 0x10));
-  }
-} // namespace
-
 int
 main(int argc, char **argv)
 {

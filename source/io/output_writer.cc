@@ -6,8 +6,14 @@
 #include <fluid_surface/io/output_writer.h>
 #include <fluid_surface/io/parameter_file.h>
 
+#include <boost/archive/text_iarchive.hpp>
+#include <boost/archive/text_oarchive.hpp>
+
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <sstream>
 
 namespace FluidSurface
 {
@@ -30,6 +36,14 @@ namespace FluidSurface
           computed[q](0) = inputs.solution_values[q][0];
       }
     };
+
+    /// Whether @p file (a name in the record of solution files) is a VTU file.
+    bool
+    is_vtu(const std::pair<double, std::string> &file)
+    {
+      const std::string &name = file.second;
+      return name.size() > 4 && name.compare(name.size() - 4, 4, ".vtu") == 0;
+    }
   } // namespace
 
   void
@@ -39,13 +53,26 @@ namespace FluidSurface
     prm.declare_entry("output directory",
                       "results",
                       Patterns::DirectoryName(),
-                      "Directory for solution-NNNNN.vtu, solution.pvd, statistics, summary, "
+                      "Directory for the solution files (solution-NNNNN.vtu and solution.pvd, or "
+                      "solution-NNNNN.h5 and solution.xdmf), statistics, summary, "
                       "used_parameters.prm and checkpoints. Never name it `output`.");
     prm.declare_entry("output interval",
                       "0",
                       RealRange::at_least(0),
-                      "Time Δt_out ≥ 0 between two VTU files; 0 writes every step.");
-    prm.declare_entry("write vtu", "true", Patterns::Bool(), "Write solution-NNNNN.vtu and solution.pvd.");
+                      "Time Δt_out ≥ 0 between two output steps; 0 writes every step.");
+    prm.declare_entry("write vtu",
+                      "true",
+                      Patterns::Bool(),
+                      "Write the solution files at all, in the chosen `format` (VTU or HDF5); false writes "
+                      "none of them (statistics and summary are written anyway).");
+    prm.declare_entry("format",
+                      "vtu",
+                      Patterns::Selection("vtu|hdf5"),
+                      "File format of the output steps: vtu writes solution-NNNNN.vtu (single precision) and "
+                      "the time series solution.pvd; hdf5 writes solution-NNNNN.h5 (parallel HDF5, double "
+                      "precision, the same fields and curved sub-cells, a vertex shared by cells of one MPI rank "
+                      "stored once) and the time series solution.xdmf. ParaView opens either series "
+                      "(solution.xdmf with its XDMF reader).");
     prm.declare_entry("subdivisions",
                       "2",
                       Patterns::Integer(1, 8),
@@ -77,6 +104,7 @@ namespace FluidSurface
                           "a directory name other than '' and 'output' (the test harness owns 'output')");
     parameters.output_interval  = prm.get_double("output interval");
     parameters.write_vtu        = prm.get_bool("write vtu");
+    parameters.format           = prm.get("format") == "hdf5" ? Format::hdf5 : Format::vtu;
     parameters.subdivisions     = prm.get_integer("subdivisions");
     parameters.overwrite        = prm.get_bool("overwrite");
     parameters.screen_interval  = prm.get_integer("screen interval");
@@ -144,12 +172,40 @@ namespace FluidSurface
       add_fields(data_out);
     data_out.build_patches(geometry.mapping(), parameters.subdivisions, DataOut<2, 3>::curved_inner_cells);
 
-    const std::string name = "solution-" + Utilities::int_to_string(times_and_names.size(), 5) + ".vtu";
-    data_out.write_vtu_in_parallel(directory() + name, geometry.get_communicator());
-    times_and_names.emplace_back(time, name);
+    const MPI_Comm     communicator = geometry.get_communicator();
+    const std::string  stem         = "solution-" + Utilities::int_to_string(times_and_names.size(), 5);
+    const bool         root         = Utilities::MPI::this_mpi_process(communicator) == 0;
+    if (parameters.format == Format::vtu)
+      {
+        data_out.write_vtu_in_parallel(directory() + stem + ".vtu", communicator);
+        times_and_names.emplace_back(time, stem + ".vtu");
+        if (root)
+          write_pvd_file();
+      }
+    else
+      {
+        write_hdf5_file(data_out, stem + ".h5", time, communicator);
+        times_and_names.emplace_back(time, stem + ".h5");
+        if (root)
+          write_xdmf_file();
+      }
     last_output_time = time;
-    if (Utilities::MPI::this_mpi_process(geometry.get_communicator()) == 0)
-      write_pvd_file();
+  }
+
+  void
+  OutputWriter::write_hdf5_file(const DataOut<2, 3> &data_out,
+                                const std::string   &name,
+                                const double         time,
+                                const MPI_Comm       communicator)
+  {
+    // Merging the vertices that neighbouring patches share is exact here: every field written is continuous
+    // (nodal FE fields and postprocessed values of them), so the merged vertices carry equal values.
+    DataOutBase::DataOutFilter filter(
+      DataOutBase::DataOutFilterFlags(/*filter_duplicate_vertices*/ true, /*xdmf_hdf5_output*/ true));
+    data_out.write_filtered_data(filter);
+    data_out.write_hdf5_parallel(filter, directory() + name, communicator);
+    // The entry names the file relative to the XDMF file beside it, so that the directory can be moved.
+    xdmf_entries.push_back(data_out.create_xdmf_entry(filter, name, time, communicator));
   }
 
   void
@@ -158,10 +214,34 @@ namespace FluidSurface
     // Written beside and renamed, so that a killed run never leaves a truncated solution.pvd.
     const std::string pvd = directory() + "solution.pvd";
     {
+      std::vector<std::pair<double, std::string>> vtu_files;
+      std::copy_if(times_and_names.begin(), times_and_names.end(), std::back_inserter(vtu_files), is_vtu);
       std::ofstream out(pvd + ".tmp");
-      DataOutBase::write_pvd_record(out, times_and_names);
+      DataOutBase::write_pvd_record(out, vtu_files);
     }
     std::filesystem::rename(pvd + ".tmp", pvd);
+  }
+
+  void
+  OutputWriter::write_xdmf_file() const
+  {
+    // What DataOutInterface::write_xdmf_file() writes, but beside and renamed like solution.pvd, and without
+    // the patches it needs for the cell type (all cells here are quadrilaterals), so that load() can call it.
+    const std::string xdmf = directory() + "solution.xdmf";
+    {
+      std::ofstream out(xdmf + ".tmp");
+      out << "<?xml version=\"1.0\" ?>\n"
+          << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+          << "<Xdmf Version=\"2.0\">\n"
+          << "  <Domain>\n"
+          << "    <Grid Name=\"CellTime\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+      for (const XDMFEntry &entry : xdmf_entries)
+        out << entry.get_xdmf_content(3, ReferenceCells::Quadrilateral);
+      out << "    </Grid>\n"
+          << "  </Domain>\n"
+          << "</Xdmf>\n";
+    }
+    std::filesystem::rename(xdmf + ".tmp", xdmf);
   }
 
   void
@@ -174,6 +254,13 @@ namespace FluidSurface
         data.set("output/file " + std::to_string(i) + " time", times_and_names[i].first);
         data.set("output/file " + std::to_string(i) + " name", times_and_names[i].second);
       }
+    for (unsigned int i = 0; i < xdmf_entries.size(); ++i)
+      {
+        std::ostringstream                 text;
+        boost::archive::text_oarchive archive(text, boost::archive::no_header);
+        archive << xdmf_entries[i];
+        data.set("output/xdmf entry " + std::to_string(i), text.str());
+      }
   }
 
   void
@@ -185,7 +272,20 @@ namespace FluidSurface
     for (unsigned int i = 0; i < n; ++i)
       times_and_names.emplace_back(data.get_double("output/file " + std::to_string(i) + " time"),
                                    data.get_string("output/file " + std::to_string(i) + " name"));
-    if (parameters.write_vtu && Utilities::MPI::this_mpi_process(communicator) == 0)
+    xdmf_entries.clear();
+    for (unsigned int i = 0; data.has("output/xdmf entry " + std::to_string(i)); ++i)
+      {
+        std::istringstream            text(data.get_string("output/xdmf entry " + std::to_string(i)));
+        boost::archive::text_iarchive archive(text, boost::archive::no_header);
+        xdmf_entries.emplace_back();
+        archive >> xdmf_entries.back();
+      }
+    // Each series is cut back to the checkpoint if this run writes it or the checkpointed run wrote into it.
+    if (!parameters.write_vtu || Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+    if (parameters.format == Format::vtu || std::any_of(times_and_names.begin(), times_and_names.end(), is_vtu))
       write_pvd_file();
+    if (!xdmf_entries.empty() || parameters.format == Format::hdf5)
+      write_xdmf_file();
   }
 } // namespace FluidSurface
