@@ -57,11 +57,11 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::string sphere  = "  set shape = sphere\n  set refinement = 1\n";
   const std::string prolate = "  set shape = ellipsoid\n  set semi-axes = 0.61, 0.61, 2.02\n  set refinement = 1\n";
-  run("sphere_at_rest", sphere, 0, "  set energy rate tolerance = 1e-4\n  set window = 0.05\n");
-  run("prolate", prolate, 2, "  set energy rate tolerance = 1\n  set window = 0.05\n");
+  run("sphere_at_rest", sphere, 0, "  set rate tolerance = 1e-4\n  set window = 0.05\n");
+  run("prolate", prolate, 2, "  set rate tolerance = 1\n  set window = 0.05\n");
   run("prolate_any_excess",
       prolate,
       2,
-      "  set energy rate tolerance = 1\n  set window = 0.05\n  set kinetic energy excess tolerance = 1\n");
+      "  set rate tolerance = 1\n  set window = 0.05\n  set kinetic energy excess tolerance = 1\n");
   run("rotating_sphere", "  set shape = sphere\n  set refinement = 2\n", 2, "");
 }

@@ -105,7 +105,9 @@ namespace FluidSurface
             accept_step(tau, candidate, energy);
             const Diagnostics::Values values = record_step(tau, step);
             check_mesh_quality();
-            const bool steady = steady_state.reached(time.time(), total_energy, kinetic_energy_excess(values));
+            const bool steady = steady_state.reached(
+              {time.time(), total_energy, {values.eigenvalues[0], values.eigenvalues[1], values.eigenvalues[2]}},
+              kinetic_energy_excess(values));
             if (output.due(time.time()) || !time.before_end() || steady)
               write_output();
             ++steps_this_run;

@@ -2,6 +2,7 @@
 #include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/time_stepping/steady_state.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -14,13 +15,14 @@ namespace FluidSurface
   SteadyState::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("steady state");
-    prm.declare_entry("energy rate tolerance",
+    prm.declare_entry("rate tolerance",
                       "0",
                       RealRange::closed(0, 1),
-                      "δ, 0 ≤ δ ≤ 1: the run ends (status completed) once |F(t) − F(t − T_w)| < δ T_w |F(t)| and "
-                      "the kinetic energy exceeds |L|²/(2λ₃) by less than ε_K |F| (a rigid rotation about the axis "
-                      "of largest inertia, the only terminal state with angular momentum L). 0: run to the end "
-                      "time.");
+                      "δ, 0 ≤ δ ≤ 1: the run ends (status completed) once, over the window T_w, the total energy F "
+                      "and the inertia eigenvalues λ_i are flat, |F(t) − F(t − T_w)| < δ T_w |F(t)| and "
+                      "|λ_i(t) − λ_i(t − T_w)| < δ T_w λ₃(t), and the kinetic energy exceeds |L|²/(2λ₃) by less "
+                      "than ε_K |F| (a rigid rotation about the axis of largest inertia, the only terminal state "
+                      "with angular momentum L). 0: run to the end time.");
     prm.declare_entry("window",
                       "1",
                       RealRange::left_open(0, 1e6),
@@ -37,35 +39,42 @@ namespace FluidSurface
   SteadyState::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("steady state");
-    energy_rate_tolerance    = prm.get_double("energy rate tolerance");
+    rate_tolerance    = prm.get_double("rate tolerance");
     window                   = prm.get_double("window");
     kinetic_excess_tolerance = prm.get_double("kinetic energy excess tolerance");
     prm.leave_subsection();
   }
 
   bool
-  SteadyState::reached(const double time, const double total_energy, const double kinetic_excess)
+  SteadyState::reached(const Sample &sample, const double kinetic_excess)
   {
     if (!enabled())
       return false;
-    if (samples.empty() || time - samples.back().first >= window / 20)
-      samples.emplace_back(time, total_energy);
+    if (samples.empty() || sample.time - samples.back().time >= window / 20)
+      samples.push_back(sample);
     // Keep one sample at or before t − T_w.
-    while (samples.size() > 1 && samples[1].first <= time - window)
+    while (samples.size() > 1 && samples[1].time <= sample.time - window)
       samples.erase(samples.begin());
-    const auto [t_old, F_old] = samples.front();
-    if (time - t_old < window)
+    const Sample &old      = samples.front();
+    const double  duration = sample.time - old.time;
+    if (duration < window)
       return false;
-    last_energy_rate    = std::abs(total_energy - F_old) / ((time - t_old) * std::abs(total_energy));
-    last_kinetic_excess = kinetic_excess / std::abs(total_energy);
-    return last_energy_rate < energy_rate_tolerance && last_kinetic_excess < kinetic_excess_tolerance;
+    last_energy_rate  = std::abs(sample.total_energy - old.total_energy) / (duration * std::abs(sample.total_energy));
+    last_inertia_rate = 0;
+    for (unsigned int i = 0; i < 3; ++i)
+      last_inertia_rate = std::max(last_inertia_rate,
+                                   std::abs(sample.inertia[i] - old.inertia[i]) / (duration * sample.inertia[2]));
+    last_kinetic_excess = kinetic_excess / std::abs(sample.total_energy);
+    return last_energy_rate < rate_tolerance && last_inertia_rate < rate_tolerance &&
+           last_kinetic_excess < kinetic_excess_tolerance;
   }
 
   std::string
   SteadyState::description() const
   {
     std::ostringstream text;
-    text << std::setprecision(3) << "|ΔF|/(T_w |F|) = " << last_energy_rate << " < δ = " << energy_rate_tolerance
+    text << std::setprecision(3) << "|ΔF|/(T_w |F|) = " << last_energy_rate
+         << ", max |Δλ_i|/(T_w λ₃) = " << last_inertia_rate << " < δ = " << rate_tolerance
          << " over T_w = " << window << ", (K − |L|²/(2λ₃))/|F| = " << last_kinetic_excess
          << " < ε_K = " << kinetic_excess_tolerance;
     return text.str();
@@ -77,8 +86,11 @@ namespace FluidSurface
     data.set("steady state/samples", static_cast<unsigned int>(samples.size()));
     for (unsigned int k = 0; k < samples.size(); ++k)
       {
-        data.set("steady state/time " + std::to_string(k), samples[k].first);
-        data.set("steady state/energy " + std::to_string(k), samples[k].second);
+        const std::string key = "steady state/" + std::to_string(k) + "/";
+        data.set(key + "time", samples[k].time);
+        data.set(key + "total energy", samples[k].total_energy);
+        for (unsigned int i = 0; i < 3; ++i)
+          data.set(key + "inertia " + std::to_string(i), samples[k].inertia[i]);
       }
   }
 
@@ -90,7 +102,12 @@ namespace FluidSurface
     if (!data.has("steady state/samples"))
       return;
     for (unsigned int k = 0; k < data.get_unsigned("steady state/samples"); ++k)
-      samples.emplace_back(data.get_double("steady state/time " + std::to_string(k)),
-                           data.get_double("steady state/energy " + std::to_string(k)));
+      {
+        const std::string key = "steady state/" + std::to_string(k) + "/";
+        Sample            sample{data.get_double(key + "time"), data.get_double(key + "total energy"), {}};
+        for (unsigned int i = 0; i < 3; ++i)
+          sample.inertia[i] = data.get_double(key + "inertia " + std::to_string(i));
+        samples.push_back(sample);
+      }
   }
 } // namespace FluidSurface

@@ -3,9 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <ostream>
+#include <array>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace FluidSurface
@@ -19,11 +18,15 @@ namespace FluidSurface
    * state must have. Without external torque the angular momentum L is
    * conserved and the kinetic energy K ≥ |L|²/(2λ₃) (λ₃ the largest inertia
    * eigenvalue), with equality only for a rigid rotation about the axis of
-   * largest inertia; the excess K − |L|²/(2λ₃) < ε_K |F| is required too. A
-   * flat F alone also holds in a metastable rotating state (the prolate
-   * spinning about its long axis before its symmetry breaks), whose excess
-   * is of the order of K. The samples of F inside the window are part of a
-   * checkpoint.
+   * largest inertia; the excess K − |L|²/(2λ₃) < ε_K |F| is required too,
+   * and the shape must be at rest: each inertia eigenvalue changes by less
+   * than δ T_w λ₃ over the window. A flat F alone also holds in a metastable
+   * rotating state: the prolate spinning about its long axis before its
+   * symmetry breaks (its excess is of the order of K), or the oblate spinning
+   * about its short axis, its axis of largest inertia, while its symmetry
+   * deviation e(λ) grows exponentially from 1e-5 (caught by the eigenvalues,
+   * as long as e(λ) grows by more than δ per unit time). The samples inside
+   * the window are part of a checkpoint.
    */
   class SteadyState
   {
@@ -37,15 +40,23 @@ namespace FluidSurface
     bool
     enabled() const
     {
-      return energy_rate_tolerance > 0;
+      return rate_tolerance > 0;
     }
 
+    /// What the check samples of a state.
+    struct Sample
+    {
+      double time, total_energy;
+      /// The inertia eigenvalues λ₁ ≤ λ₂ ≤ λ₃.
+      std::array<double, 3> inertia;
+    };
+
     /**
-     * Records the accepted state at @p time with total energy @p total_energy and kinetic energy excess
-     * @p kinetic_excess = K − |L|²/(2λ₃); returns whether the end state is reached.
+     * Records the accepted state @p sample with kinetic energy excess @p kinetic_excess = K − |L|²/(2λ₃);
+     * returns whether the end state is reached.
      */
     bool
-    reached(const double time, const double total_energy, const double kinetic_excess);
+    reached(const Sample &sample, const double kinetic_excess);
 
     /// The measures of the last reached() as one line, for the screen and the summary.
     std::string
@@ -57,13 +68,14 @@ namespace FluidSurface
     load(const CheckpointData &data);
 
   private:
-    double energy_rate_tolerance     = 0;
+    double rate_tolerance     = 0;
     double window                    = 1;
     double kinetic_excess_tolerance  = 1e-4;
     double last_energy_rate          = 0;
+    double last_inertia_rate         = 0;
     double last_kinetic_excess       = 0;
-    /// (t, F), at least T_w/20 apart, the oldest at or before t − T_w.
-    std::vector<std::pair<double, double>> samples;
+    /// At least T_w/20 apart, the oldest at or before t − T_w.
+    std::vector<Sample> samples;
   };
 } // namespace FluidSurface
 
