@@ -1,6 +1,7 @@
 // The mesh law under a prescribed morph whose axis flips: the oblate ellipsoid (1.4, 1.4, 0.6) becomes the
 // prolate (2, 0.8, 0.8) with its long axis along x, by the linear velocity u = D x, D = diag(ln(a₁/a₀)),
-// t ∈ [0, 1], refinement 2, τ = 0.01. Law reference keeps the mesh quality above half its start at every step.
+// t ∈ [0, 1], refinement 1, τ = 0.01. Law reference keeps the mesh quality above half its start at every step
+// (the law bgn does not: lowest 0.1736 against 0.3508 at the start).
 #include "prescribed_motion.h"
 
 #include <algorithm>
@@ -30,7 +31,7 @@ main(int argc, char **argv)
   using namespace FluidSurface;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const Strain     strain;
-  PrescribedMotion run("1.4, 1.4, 0.6", 2, {{"mesh redistribution/law", "reference"}}, strain);
+  PrescribedMotion run("1.4, 1.4, 0.6", 1, {{"mesh redistribution/law", "reference"}}, strain);
   const double     start = run.geometry.measure().mesh_quality;
   double           lowest = start;
   for (unsigned int n = 0; n < 100; ++n)

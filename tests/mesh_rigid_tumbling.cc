@@ -1,7 +1,8 @@
-// The mesh law under a prescribed rigid tumbling: the ellipsoid 1 : 1.5 : 3 (refinement 1) turned about its
+// The mesh law under a prescribed rigid tumbling: the ellipsoid 1 : 1.5 : 3 (refinement 0) turned about its
 // middle axis y through its centre, 50 turns in 8 steps per turn, at τ = 0.1 and τ = 1e-3 (|Ω| = (2π/8)/τ).
 // Law reference carries the nodes by the exact rotation: the mesh quality at the end equals its start to 1e-6
-// relative, area and volume to rounding, and the shape ends where it started (turned by 50 full turns).
+// relative, area and volume to rounding, and the shape ends where it started (turned by 50 full turns). The
+// law bgn fails all three (mesh quality 0.294 → 0.010 at τ = 0.1, area and volume diverging).
 #include "prescribed_motion.h"
 
 #include <deal.II/base/tensor_function.h>
@@ -39,7 +40,7 @@ main(int argc, char **argv)
   for (const double tau : {0.1, 1e-3})
     {
       const Rotation   rotation(2 * dealii::numbers::PI / (steps_per_turn * tau));
-      PrescribedMotion run("1, 1.5, 3", 1, {{"mesh redistribution/law", "reference"}}, rotation);
+      PrescribedMotion run("1, 1.5, 3", 0, {{"mesh redistribution/law", "reference"}}, rotation);
       const dealii::Vector<double> start_position(run.geometry.position());
       const auto                   start = run.geometry.measure();
       for (unsigned int n = 0; n < steps_per_turn * turns; ++n)
