@@ -10,9 +10,18 @@ cd "$(dirname "$0")/../.."
 here=benchmarks/phase3
 dir=$1; name=$2; times=$3; frame_step=${4:-0}
 work=$(mktemp -d)
-render() { xvfb-run -a pvpython doc/scripts/render_snapshots.py "$dir/solution.pvd" --statistics "$dir/statistics" \
-             --colour-by H --resolution 480 480 "$@"; }
-render --times $times -o $work/panel
+# pvpython sometimes aborts with "bad X server connection" when xvfb-run's server is not up yet: try three times.
+render() {
+  for attempt in 1 2 3; do
+    xvfb-run -a pvpython doc/scripts/render_snapshots.py "$dir/solution.pvd" --statistics "$dir/statistics" \
+      --resolution 480 480 "$@" 2> $work/render.err && return 0
+    sleep 3
+  done
+  tail -3 $work/render.err >&2; return 1
+}
+# The panel coloured by H; the animation grey (its colour range would span the short-lived curvature ripples of
+# the fast transformation, H up to +15 at t ≈ 5.03 in the oblate at refinement 3, and wash out every other frame).
+render --times $times -o $work/panel --colour-by H
 /usr/bin/python3 - "$work" "$here/${name}_panel.png" $times <<'PY'
 import sys
 import matplotlib
