@@ -17,7 +17,7 @@ try:
         summary[key.strip()] = value.strip()
 except OSError:
     pass
-outcome = "completed" if status == "0" else ("wall-time limit" if status == "124" else (message.split("error: ", 1)[-1] or f"exit {status}"))
+outcome = (message or "completed") if status == "0" else ("wall-time limit" if status == "124" else (message.split("error: ", 1)[-1] or f"exit {status}"))
 print(",".join([name, status, f"{t[-1]:.6g}", str(len(t) - 1), summary.get("rejected steps", "?"), summary.get("t_sym_1e-4", "?"), summary.get("t_sym_1e-2", "?"), f"{statistics.median(tau):.3g}",
                 f"{min(tau):.3g}", f"{max(rises, default=0):.3g}", f"{min(col['mesh quality']):.3g}",
                 summary.get("max area drift", f"{drift(col['area']):.2e}"), summary.get("max volume drift", f"{drift(col['volume']):.2e}"),
