@@ -3,6 +3,7 @@
 # prm/prolate.prm (refinement 4, to t = 7 and 25) and prm/oblate_long.prm, prm/prolate_long.prm (refinement 3, to
 # their steady state). Copies each run's statistics and summary to experiments/<name>.* and writes experiments.csv.
 #   benchmarks/phase3/experiments.sh [NAMES]        from the repository root, after building
+#   benchmarks/phase3/experiments.sh --table        only rebuild experiments.csv from experiments/
 # NAMES (default "oblate prolate oblate_long prolate_long") selects prm files; EXE the binary; the runs write to
 # results/<name> as the prm files say (resume = auto in the long ones continues a stopped run).
 set -u
@@ -10,7 +11,8 @@ cd "$(dirname "$0")/../.."
 here=benchmarks/phase3
 exe=${EXE:-./build/fluid_surface}
 mkdir -p $here/experiments
-for name in ${1:-oblate prolate oblate_long prolate_long}; do
+names=${1:-oblate prolate oblate_long prolate_long}; [ "$names" = --table ] && names=
+for name in $names; do
   r=$(awk '/set refinement/ {print $4}' prm/$name.prm)
   $exe prm/$name.prm > $here/experiments/${name}_r$r.log 2>&1; echo "prm/$name.prm: exit $?"
   cp results/$name/statistics $here/experiments/${name}_r$r.statistics
