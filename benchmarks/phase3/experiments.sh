@@ -22,6 +22,8 @@ done
 { echo "case,exit,t reached,steps,rejected,t_sym_1e-4,t_sym_1e-2,median tau,min tau,max rise/(tau F),min mesh quality,max |dA/A|,max |dV/V|,max |dL/L|,F end,bending end,omega end,rigid fraction end,tilt end,max e,wall s,outcome"
   for s in $here/experiments/*.summary; do
     case=$(basename $s .summary)
+    status=$(awk -F': ' 'NR == 1 {print $2}' $s)
     /usr/bin/python3 $here/summarize.py ${s%.summary}.statistics "prm/${case%_r[0-9]}.prm (refinement ${case##*_r})" \
-      0 "$(awk -F': ' '/^wall time/ {print $2}' $s)" "$(awk -F': ' '/^steady state: reached/ {print "steady state"}' $s)"
+      $([ "$status" = completed ] && echo 0 || echo 1) "$(awk -F': ' '/^wall time/ {print $2}' $s)" \
+      "$(awk -F': ' '/^steady state: reached/ {print "steady state"}' $s)${status#completed}"
   done; } > $here/experiments.csv
