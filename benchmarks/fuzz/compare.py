@@ -24,6 +24,9 @@ import re
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import fuzz  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 # Cases named in issue 15's closing note (entry, value); every value of these entries is listed too.
@@ -31,17 +34,8 @@ NOTABLE = [("flow/Re", None), ("time stepping/time step", None), ("time stepping
 
 
 def old_entries(binary):
-    text = subprocess.run([binary, "--print-parameters"], capture_output=True, text=True, check=True).stdout
-    entries, path = set(), []
-    for line in text.splitlines():
-        s = line.strip()
-        if s.startswith("subsection "):
-            path.append(s[len("subsection "):])
-        elif s == "end":
-            path.pop()
-        elif s.startswith("set "):
-            entries.add("/".join(path + [s[4:].partition(" =")[0].strip()]))
-    return entries
+    """The entry paths the binary's --print-parameters lists (fuzz.py's parser)."""
+    return {path for path, _, _ in fuzz.read_entries(binary)}
 
 
 def fail_kind(row):
