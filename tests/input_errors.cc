@@ -47,6 +47,9 @@ main(int argc, char **argv)
   try_file("unknown_entry.prm", "subsection geometry\n  set refinment = 2\nend\n");
   try_file("bad_pattern.prm", "subsection geometry\n  set position degree = 4\nend\n");
   try_file("bad_axes.prm", "subsection geometry\n  set semi-axes = 1, -1, 2\nend\n");
+  try_file("valve_below_floor.prm",
+           "subsection model\n  set scene = full\nend\nsubsection mesh redistribution\n  set mesh quality floor = 0.2\n"
+           "end\nsubsection reparametrization\n  set quality threshold = 0.1\nend\n");
   try_file("missing_mesh.prm", "subsection geometry\n  set shape = mesh file\n  set mesh file = nowhere.msh\nend\n");
 
   // A mesh with a triangle, and an open surface (one quadrilateral).

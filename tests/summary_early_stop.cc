@@ -54,7 +54,9 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  run("mesh_quality_floor", "subsection mesh redistribution\n  set mesh quality floor = 0.99\nend\n");
+  run("mesh_quality_floor",
+      "subsection mesh redistribution\n  set mesh quality floor = 0.99\nend\n"
+      "subsection reparametrization\n  set quality threshold = 0\nend\n");
   run("steps_per_run", "subsection checkpoint\n  set steps per run = 2\nend\n");
   run("completed", "");
 }

@@ -136,6 +136,34 @@ namespace FluidSurface
     };
   } // namespace
 
+  std::array<double, 6>
+  ConservationProjection::momenta(const SurfaceGeometry &geometry, const DoFHandler<2, 3> &dofs, const VectorType &state)
+  {
+    const Quadrature<2>       q = geometry.quadrature();
+    FEValues<2, 3>            fe_values(geometry.mapping(), dofs.get_fe(), q,
+                                        update_values | update_quadrature_points | update_JxW_values);
+    std::vector<Tensor<1, 3>> u(q.size());
+    std::array<double, 6>     sums{};
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[FEValuesExtractors::Vector(0)].get_function_values(state, u);
+          for (unsigned int k = 0; k < q.size(); ++k)
+            {
+              const Tensor<1, 3> L = cross_product_3d(fe_values.quadrature_point(k), u[k]);
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  sums[d] += u[k][d] * fe_values.JxW(k);
+                  sums[3 + d] += L[d] * fe_values.JxW(k);
+                }
+            }
+        }
+    Utilities::MPI::sum(ArrayView<const double>(sums.data(), sums.size()), geometry.get_communicator(),
+                        ArrayView<double>(sums.data(), sums.size()));
+    return sums;
+  }
+
   double
   ConservationProjection::project_momenta(const SurfaceGeometry          &geometry,
                                           const DoFHandler<2, 3>         &dofs,

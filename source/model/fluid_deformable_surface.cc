@@ -32,6 +32,7 @@ namespace FluidSurface
     : geometry(geometry)
     , dofs(geometry.triangulation())
     , linear_solver("Amesos_Mumps") // `direct solver = default` of this scene
+    , valve_solver("Amesos_Klu")
   {}
 
   void
@@ -42,6 +43,7 @@ namespace FluidSurface
     VolumeConstraint::declare_parameters(prm);
     MeshRedistribution::declare_parameters(prm);
     ConservationProjection::declare_parameters(prm);
+    SurfaceReparametrization::declare_parameters(prm);
     prm.enter_subsection("initial state");
     prm.declare_entry("angular velocity",
                       "0",
@@ -88,9 +90,14 @@ namespace FluidSurface
     volume_constraint.parse_parameters(prm, maximum_time_step);
     redistribution.parse_parameters(prm);
     conservation.parse_parameters(prm);
+    reparametrization.parse_parameters(prm, redistribution.mesh_quality_floor);
     momentum_constraints = MomentumConstraints(flow);
     // The linear solver of the step (entries shared with scene fixed surface).
     linear_solver.parse_parameters(prm);
+    ReusedFactorizationSolver::Parameters valve_parameters = linear_solver.get_parameters();
+    valve_parameters.reuse_factorization                    = false;
+    valve_parameters.direct_solver                          = "Amesos_Klu";
+    valve_solver.set_parameters(valve_parameters);
     prm.enter_subsection("initial state");
     angular_velocity     = prm.get_double("angular velocity");
     equilibrium_rotation = prm.get_bool("equilibrium rotation");
@@ -200,8 +207,10 @@ namespace FluidSurface
       angular_velocity = geometry.equilibrium_shape()->angular_velocity();
     setup_dofs();
     set_initial_velocity();
+    // The targets with the quadrature of the projection and the diagnostics (the step's rows use the
+    // assembly's: their difference is what ConservationProjection removes).
     if (flow.conserve_momenta)
-      rigid_targets = rigid_motion(current).momenta;
+      rigid_targets = ConservationProjection::momenta(geometry, dofs, current);
     const SurfaceGeometry::Measures m = geometry.measure();
     target_volume                     = m.volume;
     target_area                       = m.area;
@@ -323,6 +332,16 @@ namespace FluidSurface
     for (const auto &pair : position_pairs)
       flow_vector[pair.first] = x[pair.second];
     flow_vector.compress(VectorOperation::insert);
+  }
+
+  void
+  FluidDeformableSurface::set_reference_surface(const VectorType &position)
+  {
+    initial_position.reinit(geometry.locally_owned_dofs(), geometry.locally_relevant_dofs(), geometry.get_communicator());
+    VectorType owned_position(geometry.locally_owned_dofs(), geometry.get_communicator());
+    owned_position   = position;
+    initial_position = owned_position;
+    set_reference_position();
   }
 
   void
@@ -715,10 +734,10 @@ namespace FluidSurface
                                        BorderedSystem::BlockVector       &x,
                                        const BorderedSystem::BlockVector &b)
   {
-    linear_solver.matrix_changed(); // every step assembles its matrix on the new surface
+    ReusedFactorizationSolver &solver = reparametrizing ? valve_solver : linear_solver;
+    solver.matrix_changed(); // every step assembles its matrix on the new surface
     BorderedFactorizationPreconditioner     preconditioner(system);
-    const ReusedFactorizationSolver::Result result =
-      linear_solver.solve(system_matrix, system, x, b, preconditioner);
+    const ReusedFactorizationSolver::Result result = solver.solve(system_matrix, system, x, b, preconditioner);
     preconditioner.enforce_constraints(x, BorderedSystem::multipliers(b)); // a few vector operations, not timed
     return result;
   }
@@ -902,13 +921,16 @@ namespace FluidSurface
     // ∫u = 0, ∫x × u = 0; one solve of the bordered system per step (BorderedSystem).
     std::vector<const VectorType *> columns, rows;
     std::vector<double>             rates;
-    if (volume_constraint.enabled)
+    // The mesh relaxation of reparametrize() moves no surface: none of the global constraints.
+    const bool volume_row = volume_constraint.enabled && !relaxing_mesh;
+    const bool rigid_rows_on = rigid_constraints() && !relaxing_mesh;
+    if (volume_row)
       {
         columns.push_back(&volume_column);
         rows.push_back(&volume_column);
         rates.push_back(-(geometry.measure().volume - target_volume) / drift_time(tau));
       }
-    if (rigid_constraints())
+    if (rigid_rows_on)
       {
         // The constant parts of the linearized momenta on S^{m+1} (see assemble()) move to the right:
         // with δ = Y − X^m and div_S X^m = 2 they are −2∫u^m and −3∫x × u^m.
@@ -946,7 +968,7 @@ namespace FluidSurface
           }
       }
 
-    AssertDimension(columns.size(), (volume_constraint.enabled ? 1 : 0) + (rigid_constraints() ? 6 : 0));
+    AssertDimension(columns.size(), (volume_row ? 1 : 0) + (rigid_rows_on ? 6 : 0));
     AssertDimension(rates.size(), columns.size());
     const BorderedSystem system(system_matrix, columns, rows);
     BorderedSystem::BlockVector solution = system.make_vector(system_rhs), rhs = solution;
@@ -961,8 +983,8 @@ namespace FluidSurface
         result.factorized                             = solve.factorized;
         last_solution                                 = solution;
         const std::vector<double> mu          = BorderedSystem::multipliers(solution);
-        const unsigned int        first_rigid = volume_constraint.enabled ? 1 : 0;
-        if (volume_constraint.enabled)
+        const unsigned int        first_rigid = volume_row ? 1 : 0;
+        if (volume_row)
           result.gamma = mu[0];
         double rigid = 0;
         for (unsigned int k = first_rigid; k < mu.size(); ++k)
@@ -1024,6 +1046,115 @@ namespace FluidSurface
     current_position = geometry.position();
     current          = candidate;
     last_tau         = last_step_tau;
+  }
+
+  FluidDeformableSurface::Reparametrization
+  FluidDeformableSurface::reparametrize()
+  {
+    Reparametrization result;
+    const MPI_Comm    comm   = geometry.get_communicator();
+    reparametrizing          = true;
+    struct Finish
+    {
+      FluidDeformableSurface &model;
+      ~Finish()
+      {
+        model.reparametrizing = false;
+        model.valve_solver.release();
+      }
+    } finish{*this};
+    result.quality_before    = geometry.measure().mesh_quality;
+    const VectorType  kept_state = current, kept_position = current_position, kept_old_position = old_position;
+    const auto        restore    = [&](const std::string &why) {
+      current          = kept_state;
+      current_position = kept_position;
+      old_position     = kept_old_position;
+      last_solution.reinit(0);
+      VectorType position(geometry.locally_owned_dofs(), comm);
+      position = kept_position;
+      geometry.set_position(position);
+      geometry.compute_curvature();
+      linear_solver.request_factorization();
+      result.failure = why;
+      return result;
+    };
+
+    // New nodes on the current surface: solves of the mesh law alone (the velocity held at zero, no global
+    // constraints, weak damping), each followed by the closest-point projection of the nodes onto the surface
+    // before it and the transfer of the fields. Projecting onto the previous iterate, not onto the first
+    // surface, keeps every search within the ghost layer of a parallel mesh as long as a solve moves no node
+    // by more than a cell; the surface then changes by its interpolation error once per iteration.
+    VectorType state(owned, comm);
+    state = current;
+    {
+      static const Functions::ZeroFunction<3> at_rest(3);
+      const Function<3> *const                kept_velocity = prescribed_velocity;
+      prescribed_velocity                                   = &at_rest;
+      relaxing_mesh                                         = true;
+      const double tau = redistribution.relaxation_time > 0 ? 10 * redistribution.relaxation_time : 1.0;
+      VectorType   surface = kept_position, fields = current;
+      std::string  failure;
+      for (unsigned int iteration = 0; iteration < reparametrization.iterations && failure.empty(); ++iteration)
+        {
+          const StepResult relaxation = advance(tau);
+          if (!relaxation.solved)
+            {
+              failure = relaxation.failure;
+              break;
+            }
+          geometry.set_position(SurfaceReparametrization::closest_points(geometry, surface));
+          SurfaceReparametrization::transfer(geometry, surface, geometry.position(), dofs, fields, state);
+          surface = geometry.position();
+          fields  = state;
+          geometry.compute_curvature();
+        }
+      prescribed_velocity = kept_velocity;
+      relaxing_mesh       = false;
+      if (!failure.empty())
+        return restore("the relaxation of the mesh failed: " + failure);
+    }
+    geometry.compute_curvature();
+    // The relaxed surface differs from the old one by its interpolation error, far more than a step's drift:
+    // the projection's modes ñ, Hñ are those of the surface it starts from, so it is repeated on the
+    // projected surface.
+    if (conservation.enabled && prescribed_velocity == nullptr)
+      for (unsigned int pass = 0; pass < 2; ++pass)
+        {
+          result.node_correction +=
+            conservation.project_area_and_volume(geometry, target_area, target_volume, volume_constraint.enabled);
+          geometry.compute_curvature();
+        }
+    copy_position_into(geometry.position(), state);
+    if (!std::isfinite(state.l2_norm()))
+      return restore("the transferred fields are not finite");
+    current          = state;
+    current_position = geometry.position();
+    old_position     = current_position;
+    last_solution.reinit(0);
+    linear_solver.request_factorization();
+
+    // The velocity back onto the discrete constraints: a step of the scheme in the limit τ → 0.
+    if (flow.inertia && prescribed_velocity == nullptr)
+      {
+        const StepResult projection = advance(projection_time_step);
+        if (!projection.solved)
+          return restore("the projection of the velocity failed: " + projection.failure);
+        state = candidate;
+        copy_position_into(current_position, state);
+        VectorType position(geometry.locally_owned_dofs(), comm);
+        position = current_position;
+        geometry.set_position(position);
+        if (conservation.enabled && flow.conserve_momenta)
+          conservation.project_momenta(geometry, dofs, rigid_targets, state);
+        current = state;
+        last_solution.reinit(0);
+        linear_solver.request_factorization();
+      }
+
+    geometry.compute_curvature();
+    result.quality_after = geometry.measure().mesh_quality;
+    result.done          = true;
+    return result;
   }
 
   void

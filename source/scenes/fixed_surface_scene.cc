@@ -277,6 +277,7 @@ namespace FluidSurface
                                     "diagnostics/*",
                                     "checkpoint/*",
                                     "steady state/*",
+                                    "reparametrization/*",
                                     "time stepping/adaptive",
                                     "time stepping/minimum time step",
                                     "time stepping/maximum time step",

@@ -57,6 +57,11 @@ namespace FluidSurface
                     const std::array<double, 6>    &targets,
                     VectorType                     &state) const;
 
+    /// ∫u and ∫x × u (about the origin) of the velocity (components 0–2) of @p state (ghosted) on the current
+    /// surface of @p geometry, with its quadrature (the one project_momenta() and the diagnostics use).
+    static std::array<double, 6>
+    momenta(const SurfaceGeometry &geometry, const dealii::DoFHandler<2, 3> &dofs, const VectorType &state);
+
     bool enabled = true; ///< `enabled`
   };
 } // namespace FluidSurface

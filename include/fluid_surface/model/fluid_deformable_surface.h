@@ -22,6 +22,7 @@
 #include <fluid_surface/model/local_system.h>
 #include <fluid_surface/model/mesh_redistribution.h>
 #include <fluid_surface/model/momentum_constraints.h>
+#include <fluid_surface/model/surface_reparametrization.h>
 #include <fluid_surface/model/volume_constraint.h>
 
 #include <array>
@@ -63,6 +64,15 @@ namespace FluidSurface
       double       momentum_correction = 0; ///< ConservationProjection: |P₀ − P| + |L₀ − L| before it
     };
 
+    /// What a re-parametrization (reparametrize()) did.
+    struct Reparametrization
+    {
+      bool        done = false;
+      std::string failure; ///< why it failed (the state is then unchanged), one line
+      double      quality_before = 0, quality_after = 0;
+      double      node_correction = 0; ///< the largest normal move of a node that restored A and V
+    };
+
     FluidDeformableSurface(SurfaceGeometry &geometry);
 
     /// Declares the subsections of the components (flow, bending, volume constraint, mesh redistribution) and
@@ -99,6 +109,38 @@ namespace FluidSurface
     /// Makes the last advance() the current state.
     void
     accept();
+
+    /// Whether the accepted state's mesh of quality @p quality needs the safety valve (SurfaceReparametrization::due()).
+    bool
+    reparametrization_due(const double quality, const double quality_after_last) const
+    {
+      return reparametrization.due(quality, quality_after_last);
+    }
+    /**
+     * Replaces the reference surface S₀ of the mesh law `reference` (set by setup() to the initial surface) by
+     * @p position (geometry numbering, the same connectivity): the parametrization the law and the
+     * re-parametrization pull towards. Kept in checkpoints.
+     */
+    void
+    set_reference_surface(const VectorType &position);
+    /// Whether `reparametrization/quality threshold` is on.
+    bool
+    reparametrization_enabled() const
+    {
+      return reparametrization.enabled();
+    }
+    /**
+     * The safety valve: new nodes on the current surface (SurfaceReparametrization), the fields transferred to
+     * them; then A and V restored (ConservationProjection), the velocity projected onto the discrete
+     * incompressible fields with the step's constraints (volume rate, momenta on the surface) by one step of the
+     * scheme with τ = projection_time_step (the limit τ → 0 of the step: the L² projection with the pressure and
+     * the multipliers; the nodes stay where they are), and the momenta restored exactly. The accepted state
+     * (after accept()) is replaced; the geometry's curvature is that of the new state.
+     */
+    Reparametrization
+    reparametrize();
+    /// τ of the projection step of reparametrize(): viscous and bending terms enter it with a weight ~1e-9 relative.
+    static constexpr double projection_time_step = 1e-9;
 
     /// Undoes the last advance() (geometry and fields).
     void
@@ -296,6 +338,7 @@ namespace FluidSurface
     MeshRedistribution  redistribution;
     MomentumConstraints momentum_constraints;
     ConservationProjection conservation;
+    SurfaceReparametrization reparametrization;
 
     // `subsection initial state`: u₀ = U + ω₀ e × (x − c) + ε_u r(x), the shape perturbed by ε_X.
     dealii::Tensor<1, 3> translation_velocity;    ///< U
@@ -326,6 +369,10 @@ namespace FluidSurface
     VectorType                             reference_position;
     /// The velocity of a prescribed motion (set_prescribed_velocity()), or none.
     const dealii::Function<3>             *prescribed_velocity = nullptr;
+    /// Whether advance() is a solve of the mesh law alone (reparametrize(): velocity zero, no global constraints).
+    bool relaxing_mesh = false;
+    /// Whether advance() is one of the solves of reparametrize(), which use valve_solver.
+    bool reparametrizing = false;
     /// The flow DoFs (components 0–2) of the locally owned nodes of u and of Y.
     std::vector<std::array<dealii::types::global_dof_index, 3>> velocity_nodes, new_position_nodes;
     /// Law reference: maps the solution of a step in the carried frame back (u = Qũ, Y = the carry of Ỹ).
@@ -340,6 +387,9 @@ namespace FluidSurface
 
     /// The step's LU factorization, kept across steps (`subsection linear solver`).
     ReusedFactorizationSolver                       linear_solver;
+    /// The solves of reparametrize(), by KLU without reuse: MUMPS refused (error −22) the mesh-law matrix of a
+    /// sheared refinement-3 mesh that KLU factorized (tests/mesh_reparametrization).
+    ReusedFactorizationSolver                       valve_solver;
     dealii::TimerOutput                            *step_timer            = nullptr;
     /// The columns (r_k, v) of the rigid motions r = e_1, e_2, e_3, e_1 × x, e_2 × x, e_3 × x, whose
     /// multipliers enforce ∫u = 0, ∫x × u = 0 (Stokes limit) or hold the momenta (MomentumConstraints).

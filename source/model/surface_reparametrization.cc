@@ -1,0 +1,278 @@
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/vector.h>
+
+#include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/model/surface_reparametrization.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+namespace FluidSurface
+{
+  using namespace dealii;
+
+  namespace
+  {
+    using CellIterator = DoFHandler<2, 3>::active_cell_iterator;
+
+    /// The same cell of the triangulation as an iterator of @p dofs.
+    template <class Iterator>
+    CellIterator
+    cell_of(const Iterator &cell, const DoFHandler<2, 3> &dofs)
+    {
+      return CellIterator(&dofs.get_triangulation(), cell->level(), cell->index(), &dofs);
+    }
+
+    /// The point X(ξ) of a cell of a vector Q_k position element with the cell values @p values, and its two
+    /// tangent vectors ∂X/∂ξ_0, ∂X/∂ξ_1.
+    Point<3>
+    position_at(const FiniteElement<2, 3> &fe,
+                const Vector<double>      &values,
+                const Point<2>            &xi,
+                Tensor<1, 3>              *d0 = nullptr,
+                Tensor<1, 3>              *d1 = nullptr)
+    {
+      Point<3>     x;
+      Tensor<1, 3> t0, t1;
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          const unsigned int c = fe.system_to_component_index(i).first;
+          x[c] += values[i] * fe.shape_value(i, xi);
+          if (d0 != nullptr)
+            {
+              const Tensor<1, 2> g = fe.shape_grad(i, xi);
+              t0[c] += values[i] * g[0];
+              t1[c] += values[i] * g[1];
+            }
+        }
+      if (d0 != nullptr)
+        {
+          *d0 = t0;
+          *d1 = t1;
+        }
+      return x;
+    }
+
+    /**
+     * The closest point on the discrete surface given by a position field: a projected Gauss–Newton iteration
+     * for the reference point ξ ∈ [0, 1]² in a cell, and a walk through the cells around the vertices of the
+     * best cell while the foot point lies on a cell's boundary. Cells must be locally owned or ghost cells
+     * (the position vector ghosted); points farther than a few cells from their starting cell are not meant.
+     */
+    class SurfacePointLocator
+    {
+    public:
+      struct Location
+      {
+        CellIterator cell;
+        Point<2>     xi;
+        Point<3>     point;
+        Tensor<1, 3> normal; ///< unit normal of the surface at the point (orientation of the cell)
+        double       distance = 0;
+      };
+
+      SurfacePointLocator(const DoFHandler<2, 3> &dofs, const VectorType &position)
+        : dofs(dofs)
+        , position(position)
+        , vertex_cells(GridTools::vertex_to_cell_map(dofs.get_triangulation()))
+      {}
+
+      /// The closest point to @p p, searched from the cell @p start.
+      Location
+      locate(const Point<3> &p, const CellIterator &start) const
+      {
+        Location     best   = closest_in_cell(start, p);
+        CellIterator centre = start;
+        for (unsigned int round = 0; round < 16 && !interior(best.xi); ++round)
+          {
+            for (unsigned int v = 0; v < GeometryInfo<2>::vertices_per_cell; ++v)
+              for (const auto &neighbour : vertex_cells[centre->vertex_index(v)])
+                if (!neighbour->is_artificial() && neighbour != centre)
+                  {
+                    const Location candidate = closest_in_cell(cell_of(neighbour, dofs), p);
+                    if (candidate.distance < best.distance - 1e-15)
+                      best = candidate;
+                  }
+            if (best.cell == centre)
+              break;
+            centre = best.cell;
+          }
+        return best;
+      }
+
+    private:
+      static bool
+      interior(const Point<2> &xi)
+      {
+        return xi[0] > 1e-12 && xi[0] < 1 - 1e-12 && xi[1] > 1e-12 && xi[1] < 1 - 1e-12;
+      }
+
+      Location
+      closest_in_cell(const CellIterator &cell, const Point<3> &p) const
+      {
+        const FiniteElement<2, 3> &fe = dofs.get_fe();
+        Vector<double>             values(fe.n_dofs_per_cell());
+        cell->get_dof_values(position, values);
+        Location     location;
+        Point<2>     xi(0.5, 0.5);
+        Tensor<1, 3> d0, d1;
+        Point<3>     x = position_at(fe, values, xi, &d0, &d1);
+        for (unsigned int iteration = 0; iteration < 30; ++iteration)
+          {
+            const Tensor<1, 3> r = x - p;
+            const double       a = d0 * d0, b = d0 * d1, c = d1 * d1, det = a * c - b * b;
+            if (!(det > 0))
+              break;
+            const double g0 = d0 * r, g1 = d1 * r;
+            Point<2>     next(xi[0] - (c * g0 - b * g1) / det, xi[1] - (a * g1 - b * g0) / det);
+            for (unsigned int d = 0; d < 2; ++d)
+              next[d] = std::clamp(next[d], 0.0, 1.0);
+            const double change = (next - xi).norm();
+            xi                  = next;
+            x                   = position_at(fe, values, xi, &d0, &d1);
+            if (change < 1e-14)
+              break;
+          }
+        location.cell     = cell;
+        location.xi       = xi;
+        location.point    = x;
+        location.normal   = cross_product_3d(d0, d1);
+        location.normal  /= location.normal.norm();
+        location.distance = (x - p).norm();
+        return location;
+      }
+
+      const DoFHandler<2, 3>                                             &dofs;
+      const VectorType                                                   &position;
+      const std::vector<std::set<Triangulation<2, 3>::active_cell_iterator>> vertex_cells;
+    };
+  } // namespace
+
+  void
+  SurfaceReparametrization::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("reparametrization");
+    prm.declare_entry("quality threshold",
+                      "0.1",
+                      RealRange::closed(0, 1),
+                      "q_r, 0 ≤ q_r ≤ 1: when the mesh quality (min over cells of σ_min/σ_max of the Jacobian) of an "
+                      "accepted step falls below q_r, the surface is re-parametrized at fixed connectivity (new "
+                      "nodes on the current surface, fields transferred, A, V, incompressibility and momenta "
+                      "restored; the jumps go to the statistics and the summary). 0: never. Must exceed 'mesh "
+                      "redistribution/mesh quality floor'.");
+    prm.declare_entry("relaxation iterations",
+                      "5",
+                      Patterns::Integer(1, 100),
+                      "n_r, 1 ≤ n_r ≤ 100: linearized solves of the mesh law alone (velocity zero, no global "
+                      "constraints, damping T_r/τ with τ = 10 T_r) that place the new nodes, each followed by the "
+                      "closest-point projection of the nodes onto the surface before it and the transfer of the "
+                      "fields.");
+    prm.leave_subsection();
+  }
+
+  void
+  SurfaceReparametrization::parse_parameters(ParameterHandler &prm, const double mesh_quality_floor)
+  {
+    prm.enter_subsection("reparametrization");
+    quality_threshold = prm.get_double("quality threshold");
+    iterations        = prm.get_integer("relaxation iterations");
+    prm.leave_subsection();
+    if (quality_threshold > 0 && quality_threshold <= mesh_quality_floor)
+      {
+        std::ostringstream expected;
+        expected << "0 (off) or a number above 'mesh redistribution/mesh quality floor' = " << mesh_quality_floor
+                 << " (a run stops at the floor, so the valve would never act)";
+        std::ostringstream value;
+        value << quality_threshold;
+        throw_invalid_entry("reparametrization/quality threshold", value.str(), expected.str());
+      }
+  }
+
+  bool
+  SurfaceReparametrization::due(const double quality, const double quality_after_last) const
+  {
+    return enabled() && quality < quality_threshold &&
+           (quality_after_last >= quality_threshold || quality < 0.9 * quality_after_last);
+  }
+
+  VectorType
+  SurfaceReparametrization::closest_points(const SurfaceGeometry &geometry, const VectorType &old_position)
+  {
+    const DoFHandler<2, 3>    &dofs  = geometry.dof_handler();
+    const FiniteElement<2, 3> &fe    = dofs.get_fe();
+    const IndexSet            &owned = geometry.locally_owned_dofs();
+    const SurfacePointLocator  locator(dofs, old_position);
+    VectorType                 result(owned, geometry.get_communicator());
+    Vector<double>             nodes(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(indices);
+          cell->get_dof_values(geometry.position(), nodes);
+          std::vector<bool> done(fe.n_dofs_per_cell(), false);
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            {
+              if (done[i] || !owned.is_element(indices[i]))
+                continue;
+              const Point<2> xi       = fe.unit_support_point(i);
+              const auto     location = locator.locate(position_at(fe, nodes, xi), cell);
+              for (unsigned int j = i; j < fe.n_dofs_per_cell(); ++j)
+                if (!done[j] && fe.unit_support_point(j).distance(xi) < 1e-12)
+                  {
+                    result[indices[j]] = location.point[fe.system_to_component_index(j).first];
+                    done[j]            = true;
+                  }
+            }
+        }
+    result.compress(VectorOperation::insert);
+    return result;
+  }
+
+  void
+  SurfaceReparametrization::transfer(const SurfaceGeometry  &geometry,
+                                     const VectorType       &old_position,
+                                     const VectorType       &new_position,
+                                     const DoFHandler<2, 3> &field_dofs,
+                                     const VectorType       &old_field,
+                                     VectorType             &new_field)
+  {
+    const SurfacePointLocator  locator(geometry.dof_handler(), old_position);
+    const FiniteElement<2, 3> &position_fe = geometry.fe();
+    const FiniteElement<2, 3> &field_fe    = field_dofs.get_fe();
+    const IndexSet             owned       = field_dofs.locally_owned_dofs();
+    Vector<double>             new_nodes(position_fe.n_dofs_per_cell()), old_values(field_fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> indices(field_fe.n_dofs_per_cell());
+    std::vector<double>                  by_component(field_fe.n_components());
+    for (const auto &cell : field_dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const CellIterator geometry_cell = cell_of(cell, geometry.dof_handler());
+          geometry_cell->get_dof_values(new_position, new_nodes);
+          cell->get_dof_indices(indices);
+          std::vector<bool> done(field_fe.n_dofs_per_cell(), false);
+          for (unsigned int i = 0; i < field_fe.n_dofs_per_cell(); ++i)
+            {
+              if (done[i] || !owned.is_element(indices[i]))
+                continue;
+              const Point<2> xi       = field_fe.unit_support_point(i);
+              const auto     location = locator.locate(position_at(position_fe, new_nodes, xi), geometry_cell);
+              cell_of(location.cell, field_dofs)->get_dof_values(old_field, old_values);
+              std::fill(by_component.begin(), by_component.end(), 0.0);
+              for (unsigned int k = 0; k < field_fe.n_dofs_per_cell(); ++k)
+                by_component[field_fe.system_to_component_index(k).first] +=
+                  old_values[k] * field_fe.shape_value(k, location.xi);
+              for (unsigned int j = i; j < field_fe.n_dofs_per_cell(); ++j)
+                if (!done[j] && owned.is_element(indices[j]) && field_fe.unit_support_point(j).distance(xi) < 1e-12)
+                  {
+                    new_field[indices[j]] = by_component[field_fe.system_to_component_index(j).first];
+                    done[j]               = true;
+                  }
+            }
+        }
+    new_field.compress(VectorOperation::insert);
+  }
+} // namespace FluidSurface
