@@ -22,6 +22,7 @@
 #include <fluid_surface/model/fluid_deformable_surface.h>
 
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <limits>
 
@@ -1065,6 +1066,10 @@ namespace FluidSurface
       }
     } finish{*this};
     result.quality_before    = geometry.measure().mesh_quality;
+    const auto total_energy  = [&]() {
+      return (flow.inertia ? kinetic_energy(current) : 0.0) + bending.energy(geometry.compute_curvature());
+    };
+    const double energy_before = total_energy();
     const VectorType  kept_state = current, kept_position = current_position, kept_old_position = old_position;
     const auto        restore    = [&](const std::string &why) {
       current          = kept_state;
@@ -1164,6 +1169,15 @@ namespace FluidSurface
       {
         std::ostringstream why;
         why << "it did not raise the mesh quality (" << result.quality_before << " -> " << result.quality_after << ")";
+        return restore(why.str());
+      }
+    const double energy_after = total_energy();
+    if (!(std::abs(energy_after - energy_before) <= reparametrization.maximum_energy_jump * std::abs(energy_before)))
+      {
+        std::ostringstream why;
+        why << "it changed F by " << std::setprecision(3) << (energy_after - energy_before) / std::abs(energy_before)
+            << " relative, more than 'reparametrization/maximum energy jump' = "
+            << reparametrization.maximum_energy_jump;
         return restore(why.str());
       }
     result.done = true;

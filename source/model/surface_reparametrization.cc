@@ -170,6 +170,13 @@ namespace FluidSurface
                       "constraints, damping T_r/τ with τ = 10 T_r) that place the new nodes, each followed by the "
                       "closest-point projection of the nodes onto the surface before it and the transfer of the "
                       "fields.");
+    prm.declare_entry("maximum energy jump",
+                      "0.01",
+                      RealRange::closed(0, 1),
+                      "ε_J, 0 ≤ ε_J ≤ 1: a re-parametrization that changes the total energy F by more than ε_J|F| is "
+                      "not taken (the state is restored, a warning printed, and the run goes on towards the mesh "
+                      "quality floor). The new surface interpolates the old one; on a degraded mesh its curvature "
+                      "picks up the old cells' kinks (doc/scheme.md, \"Safety valve\").");
     prm.leave_subsection();
   }
 
@@ -178,7 +185,8 @@ namespace FluidSurface
   {
     prm.enter_subsection("reparametrization");
     quality_threshold = prm.get_double("quality threshold");
-    iterations        = prm.get_integer("relaxation iterations");
+    iterations          = prm.get_integer("relaxation iterations");
+    maximum_energy_jump = prm.get_double("maximum energy jump");
     prm.leave_subsection();
     if (quality_threshold > 0 && quality_threshold <= mesh_quality_floor)
       {

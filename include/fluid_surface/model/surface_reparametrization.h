@@ -73,6 +73,7 @@ namespace FluidSurface
 
     double       quality_threshold = 0.1; ///< q_r
     unsigned int iterations        = 5;   ///< n_r, solves of the mesh law that place the new nodes
+    double       maximum_energy_jump = 1e-2; ///< ε_F: a re-parametrization that changes F by more is not taken
   };
 } // namespace FluidSurface
 
