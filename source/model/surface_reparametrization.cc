@@ -209,34 +209,9 @@ namespace FluidSurface
   VectorType
   SurfaceReparametrization::closest_points(const SurfaceGeometry &geometry, const VectorType &old_position)
   {
-    const DoFHandler<2, 3>    &dofs  = geometry.dof_handler();
-    const FiniteElement<2, 3> &fe    = dofs.get_fe();
-    const IndexSet            &owned = geometry.locally_owned_dofs();
-    const SurfacePointLocator  locator(dofs, old_position);
-    VectorType                 result(owned, geometry.get_communicator());
-    Vector<double>             nodes(fe.n_dofs_per_cell());
-    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
-    for (const auto &cell : dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(indices);
-          cell->get_dof_values(geometry.position(), nodes);
-          std::vector<bool> done(fe.n_dofs_per_cell(), false);
-          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-            {
-              if (done[i] || !owned.is_element(indices[i]))
-                continue;
-              const Point<2> xi       = fe.unit_support_point(i);
-              const auto     location = locator.locate(position_at(fe, nodes, xi), cell);
-              for (unsigned int j = i; j < fe.n_dofs_per_cell(); ++j)
-                if (!done[j] && fe.unit_support_point(j).distance(xi) < 1e-12)
-                  {
-                    result[indices[j]] = location.point[fe.system_to_component_index(j).first];
-                    done[j]            = true;
-                  }
-            }
-        }
-    result.compress(VectorOperation::insert);
+    // The old position field evaluated where each node now lies on the old surface: its closest point.
+    VectorType result(geometry.locally_owned_dofs(), geometry.get_communicator());
+    transfer(geometry, old_position, geometry.position(), geometry.dof_handler(), old_position, result);
     return result;
   }
 
