@@ -2,11 +2,15 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/vector.h>
 
+#include <fluid_surface/io/checkpoint.h>
 #include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/io/statistics_file.h>
+#include <fluid_surface/model/surface_step.h>
 #include <fluid_surface/model/surface_reparametrization.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <set>
 #include <sstream>
 
@@ -257,5 +261,208 @@ namespace FluidSurface
             }
         }
     new_field.compress(VectorOperation::insert);
+  }
+
+  SurfaceReparametrization::Result
+  SurfaceReparametrization::reparametrize(SurfaceStep                   &step,
+                                          SurfaceState                  &accepted,
+                                          const StepRequest             &run_request,
+                                          const std::function<double()> &total_energy) const
+  {
+    Result           result;
+    SurfaceGeometry &geometry = step.moved_geometry();
+    const MPI_Comm   comm     = geometry.get_communicator();
+    // The solves of the valve use a fresh KLU factorization, freed at the end.
+    struct Finish
+    {
+      SurfaceStep &step;
+      ~Finish()
+      {
+        step.release_fresh_factorization();
+      }
+    } finish{step};
+    result.quality_before      = geometry.measure().mesh_quality;
+    const double energy_before = total_energy();
+    const VectorType  kept_state = accepted.solution, kept_position = accepted.position;
+    const auto        restore    = [&](const std::string &why) {
+      accepted.solution = kept_state;
+      accepted.position = kept_position;
+      step.forget_last_solution();
+      VectorType position(geometry.locally_owned_dofs(), comm);
+      position = kept_position;
+      geometry.set_position(position);
+      geometry.compute_curvature();
+      step.request_factorization();
+      result.failure = why;
+      return result;
+    };
+
+    // New nodes on the current surface: solves of the mesh law alone (the velocity held at zero, no global
+    // constraints, weak damping), each followed by the closest-point projection of the nodes onto the surface
+    // before it and the transfer of the fields. Projecting onto the previous iterate, not onto the first
+    // surface, keeps every search within the ghost layer of a parallel mesh as long as a solve moves no node
+    // by more than a cell; the surface then changes by its interpolation error once per iteration.
+    const SurfaceFluid           &flow         = step.flow;
+    const ConservationProjection &conservation = step.conservation;
+    const DoFHandler<2, 3>       &dofs         = step.dof_handler();
+    VectorType                    state(dofs.locally_owned_dofs(), comm);
+    state = accepted.solution;
+    {
+      StepRequest relaxation_request;
+      relaxation_request.velocity           = StepRequest::Velocity::at_rest;
+      relaxation_request.global_constraints = false;
+      // The target is always the membrane energy relative to S₀: with law bgn the conformal distribution of
+      // the current surface is the one that degraded (a bgn prolate went from quality 0.098 to 0.088).
+      relaxation_request.law    = MeshRedistribution::Law::reference;
+      relaxation_request.solver = StepRequest::Solver::fresh_klu;
+      const double relaxation_time = step.redistribution.relaxation_time;
+      const double tau             = relaxation_time > 0 ? 10 * relaxation_time : 1.0;
+      VectorType   surface = kept_position, fields = accepted.solution;
+      std::string  failure;
+      for (unsigned int iteration = 0; iteration < iterations && failure.empty(); ++iteration)
+        {
+          const SurfaceStep::Result relaxation = step.advance(relaxation_request, tau);
+          if (!relaxation.solved)
+            {
+              failure = relaxation.failure;
+              break;
+            }
+          geometry.set_position(closest_points(geometry, surface));
+          transfer(geometry, surface, geometry.position(), dofs, fields, state);
+          surface = geometry.position();
+          fields  = state;
+          geometry.compute_curvature();
+        }
+      if (!failure.empty())
+        return restore("the relaxation of the mesh failed: " + failure);
+    }
+    geometry.compute_curvature();
+    // The relaxed surface differs from the old one by its interpolation error, far more than a step's drift:
+    // the projection's modes ñ, Hñ are those of the surface it starts from, so it is repeated on the
+    // projected surface.
+    if (conservation.enabled && run_request.prescribed_velocity() == nullptr)
+      for (unsigned int pass = 0; pass < 2; ++pass)
+        {
+          result.node_correction += conservation.project_area_and_volume(
+            geometry, accepted.target_area, accepted.target_volume, step.volume_constraint.enabled);
+          geometry.compute_curvature();
+        }
+    step.copy_position_into(geometry.position(), state);
+    if (!std::isfinite(state.l2_norm()))
+      return restore("the transferred fields are not finite");
+    accepted.solution = state;
+    accepted.position = geometry.position();
+    step.forget_last_solution();
+    step.request_factorization();
+
+    // The velocity back onto the discrete constraints: a step of the scheme in the limit τ → 0.
+    if (flow.inertia && run_request.prescribed_velocity() == nullptr)
+      {
+        StepRequest projection_request = run_request;
+        projection_request.solver      = StepRequest::Solver::fresh_klu;
+        const SurfaceStep::Result projection = step.advance(projection_request, projection_time_step);
+        if (!projection.solved)
+          return restore("the projection of the velocity failed: " + projection.failure);
+        state = step.candidate();
+        step.copy_position_into(accepted.position, state);
+        VectorType position(geometry.locally_owned_dofs(), comm);
+        position = accepted.position;
+        geometry.set_position(position);
+        if (conservation.enabled && flow.conserve_momenta)
+          conservation.project_momenta(geometry, dofs, accepted.rigid_targets, state);
+        accepted.solution = state;
+        step.forget_last_solution();
+        step.request_factorization();
+      }
+
+    geometry.compute_curvature();
+    result.quality_after = geometry.measure().mesh_quality;
+    // A worse mesh is not taken (a relaxation that changes nothing, as on the initial mesh, is).
+    if (!(result.quality_after >= (1 - 1e-3) * result.quality_before))
+      {
+        std::ostringstream why;
+        why << "it did not raise the mesh quality (" << result.quality_before << " -> " << result.quality_after << ")";
+        return restore(why.str());
+      }
+    const double energy_after = total_energy();
+    if (!(std::abs(energy_after - energy_before) <= maximum_energy_jump * std::abs(energy_before)))
+      {
+        std::ostringstream why;
+        why << "it changed F by " << std::setprecision(3) << (energy_after - energy_before) / std::abs(energy_before)
+            << " relative, more than 'reparametrization/maximum energy jump' = "
+            << maximum_energy_jump;
+        return restore(why.str());
+      }
+    result.done = true;
+    return result;
+  }
+
+  SurfaceReparametrization::Jumps
+  SurfaceReparametrization::record(const Result &result, const double quality, const Measures &before, const Measures &after)
+  {
+    if (!result.done)
+      {
+        // Not again before the quality has fallen by another 10 %.
+        quality_after_last = quality;
+        return {{0, 0, 0, 0}};
+      }
+    const auto relative = [](const double change, const double scale) {
+      return std::abs(change) / (scale != 0 ? std::abs(scale) : 1.0);
+    };
+    const Jumps jumps{{relative(after.energy - before.energy, before.energy),
+                       relative(after.area - before.area, before.area),
+                       relative(after.volume - before.volume, before.volume),
+                       relative((after.angular_momentum - before.angular_momentum).norm(),
+                                before.angular_momentum.norm())}};
+    ++count;
+    quality_after_last = result.quality_after;
+    for (unsigned int k = 0; k < jumps.size(); ++k)
+      largest_jumps[k] = std::max(largest_jumps[k], jumps[k]);
+    return jumps;
+  }
+
+  void
+  SurfaceReparametrization::add_to_statistics(StatisticsFile &statistics, const Jumps &jumps) const
+  {
+    if (!enabled())
+      return;
+    statistics.add_value("reparametrizations", count);
+    statistics.add_value("reparametrization energy jump", jumps[0]);
+    statistics.add_value("reparametrization area jump", jumps[1]);
+    statistics.add_value("reparametrization volume jump", jumps[2]);
+    statistics.add_value("reparametrization angular momentum jump", jumps[3]);
+  }
+
+  void
+  SurfaceReparametrization::write_summary(std::ostream &text) const
+  {
+    if (!enabled())
+      return;
+    text << "re-parametrizations: " << count;
+    if (count > 0)
+      text << std::scientific << std::setprecision(2) << " (largest jumps: ΔF/F = " << largest_jumps[0]
+           << ", ΔA/A = " << largest_jumps[1] << ", ΔV/V = " << largest_jumps[2] << ", ΔL/L = " << largest_jumps[3]
+           << ")" << std::defaultfloat;
+    text << '\n';
+  }
+
+  void
+  SurfaceReparametrization::save(CheckpointData &data) const
+  {
+    data.set("reparametrization/count", count);
+    data.set("reparametrization/quality after last", quality_after_last);
+    for (unsigned int k = 0; k < largest_jumps.size(); ++k)
+      data.set("reparametrization/largest jump " + std::to_string(k), largest_jumps[k]);
+  }
+
+  void
+  SurfaceReparametrization::load(const CheckpointData &data)
+  {
+    if (!data.has("reparametrization/count"))
+      return;
+    count              = data.get_unsigned("reparametrization/count");
+    quality_after_last = data.get_double("reparametrization/quality after last");
+    for (unsigned int k = 0; k < largest_jumps.size(); ++k)
+      largest_jumps[k] = data.get_double("reparametrization/largest jump " + std::to_string(k));
   }
 } // namespace FluidSurface

@@ -89,7 +89,7 @@ namespace FluidSurface
         while (time.before_end())
           {
             const double                             tau  = time.step_size();
-            const FluidDeformableSurface::StepResult step = model.advance(tau);
+            const SurfaceStep::Result step = model.advance(tau);
             if (!step.solved)
               {
                 retry_step(tau, step.failure, step.failure_details);
@@ -104,7 +104,7 @@ namespace FluidSurface
                 continue;
               }
             accept_step(tau, candidate, energy);
-            const ReparametrizationJumps jumps  = reparametrize_if_due();
+            const SurfaceReparametrization::Jumps jumps = reparametrize_if_due();
             const Diagnostics::Values    values = record_step(tau, step, jumps);
             check_mesh_quality();
             const bool steady = steady_state.reached(
@@ -188,8 +188,7 @@ namespace FluidSurface
     TimerOutput::Scope section(computing_timer, "curvature and energy");
     Energies           candidate;
     candidate.willmore = geometry.compute_curvature();
-    candidate.total    = (model.has_inertia() ? model.kinetic_energy(model.candidate_solution()) : 0.0) +
-                      model.bending_energy(candidate.willmore);
+    candidate.total    = model.total_energy(model.kinetic_energy(model.candidate_solution()), candidate.willmore);
     return candidate;
   }
 
@@ -248,7 +247,7 @@ namespace FluidSurface
                               report);
     pcout << report.str() << std::flush;
     willmore = geometry.compute_curvature();
-    record_step(0.0, FluidDeformableSurface::StepResult());
+    record_step(0.0, SurfaceStep::Result());
     write_output();
   }
 
@@ -270,16 +269,9 @@ namespace FluidSurface
     energy_control.load(data);
     steady_state.load(data);
     wall_time_before_restart = data.get_double("simulation/wall time");
-    if (data.has("reparametrization/count"))
-      {
-        reparametrizations              = data.get_unsigned("reparametrization/count");
-        quality_after_reparametrization = data.get_double("reparametrization/quality after last");
-        for (unsigned int k = 0; k < largest_reparametrization_jumps.size(); ++k)
-          largest_reparametrization_jumps[k] = data.get_double("reparametrization/largest jump " + std::to_string(k));
-      }
     willmore                 = geometry.compute_curvature();
     // The restored fields must reproduce the energy recorded with them (to rounding: the rank count may differ).
-    const double energy = model.kinetic_energy() + model.bending_energy(willmore);
+    const double energy = model.total_energy(model.kinetic_energy(), willmore);
     if (!(std::abs(energy - total_energy) <= 1e-10 * std::abs(total_energy)))
       {
         std::ostringstream msg;
@@ -301,45 +293,36 @@ namespace FluidSurface
     return v.kinetic_energy - v.angular_momentum.norm_square() / (2 * v.eigenvalues[2]);
   }
 
-  FullModelScene::ReparametrizationJumps
+  SurfaceReparametrization::Jumps
   FullModelScene::reparametrize_if_due()
   {
-    if (!model.reparametrization_enabled())
+    SurfaceReparametrization &valve = model.safety_valve();
+    if (!valve.enabled())
       return {{0, 0, 0, 0}};
     const double quality = geometry.measure().mesh_quality;
-    if (!model.reparametrization_due(quality, quality_after_reparametrization))
+    if (!valve.due(quality))
       return {{0, 0, 0, 0}};
     TimerOutput::Scope section(computing_timer, "reparametrization");
     // F, A, V and L as the statistics measure them, before and after.
     const auto measures = [&]() {
       const Diagnostics::Values v = diagnostics.evaluate(geometry, model.dof_handler(), model.solution());
-      const double F = (model.has_inertia() ? v.kinetic_energy : 0.0) + model.bending_energy(willmore);
-      return std::make_tuple(F, v.area, v.volume, v.angular_momentum);
+      return SurfaceReparametrization::Measures{
+        model.total_energy(v.kinetic_energy, willmore), v.area, v.volume, v.angular_momentum};
     };
-    const auto [F0, A0, V0, L0]                           = measures();
-    const FluidDeformableSurface::Reparametrization valve = model.reparametrize();
-    willmore                                              = geometry.compute_curvature();
-    if (!valve.done)
+    const SurfaceReparametrization::Measures before = measures();
+    const SurfaceReparametrization::Result   result = model.reparametrize();
+    willmore                                        = geometry.compute_curvature();
+    if (!result.done)
       {
-        // Not again before the quality has fallen by another 10 %.
-        quality_after_reparametrization = quality;
+        valve.record(result, quality, before, before);
         pcout << "    warning: the re-parametrization at step " << time.step_number() << ", t = " << time.time()
-              << " failed (" << valve.failure << "); the run goes on with the old mesh" << std::endl;
+              << " failed (" << result.failure << "); the run goes on with the old mesh" << std::endl;
         return {{0, 0, 0, 0}};
       }
-    const auto [F1, A1, V1, L1] = measures();
-    const auto relative         = [](const double change, const double scale) {
-      return std::abs(change) / (scale != 0 ? std::abs(scale) : 1.0);
-    };
-    const ReparametrizationJumps jumps{
-      {relative(F1 - F0, F0), relative(A1 - A0, A0), relative(V1 - V0, V0), relative((L1 - L0).norm(), L0.norm())}};
-    ++reparametrizations;
-    quality_after_reparametrization = valve.quality_after;
-    for (unsigned int k = 0; k < jumps.size(); ++k)
-      largest_reparametrization_jumps[k] = std::max(largest_reparametrization_jumps[k], jumps[k]);
+    const SurfaceReparametrization::Jumps jumps = valve.record(result, quality, before, measures());
     pcout << "-- mesh re-parametrized at step " << time.step_number() << ", t = " << std::setprecision(6)
-          << time.time() << ": mesh quality " << std::setprecision(3) << valve.quality_before << " -> "
-          << valve.quality_after << std::scientific << std::setprecision(2) << "; jumps ΔF/F = " << jumps[0]
+          << time.time() << ": mesh quality " << std::setprecision(3) << result.quality_before << " -> "
+          << result.quality_after << std::scientific << std::setprecision(2) << "; jumps ΔF/F = " << jumps[0]
           << ", ΔA/A = " << jumps[1] << ", ΔV/V = " << jumps[2] << ", ΔL/L = " << jumps[3] << std::defaultfloat
           << std::endl;
     return jumps;
@@ -347,15 +330,14 @@ namespace FluidSurface
 
   Diagnostics::Values
   FullModelScene::record_step(const double                              tau,
-                              const FluidDeformableSurface::StepResult &step,
-                              const ReparametrizationJumps             &jumps)
+                              const SurfaceStep::Result &step,
+                              const SurfaceReparametrization::Jumps    &jumps)
   {
     TimerOutput::Scope        section(computing_timer, "diagnostics");
     const Diagnostics::Values v = diagnostics.evaluate(geometry, model.dof_handler(), model.solution());
     diagnostics.record(v, time.time(), tau);
     const double bending_energy = model.bending_energy(willmore);
-    // The Stokes limit has no kinetic energy: F is the bending energy alone.
-    total_energy = (model.has_inertia() ? v.kinetic_energy : 0.0) + bending_energy;
+    total_energy                = model.total_energy(v.kinetic_energy, willmore);
 
     statistics.add_value("time step", time.step_number());
     statistics.add_value("time", time.time());
@@ -369,14 +351,7 @@ namespace FluidSurface
     statistics.add_value("linear iterations", step.linear_iterations);
     statistics.add_value("factorized", step.factorized ? 1 : 0);
     statistics.add_value("rigid multiplier", step.rigid_force);
-    if (model.reparametrization_enabled())
-      {
-        statistics.add_value("reparametrizations", reparametrizations);
-        statistics.add_value("reparametrization energy jump", jumps[0]);
-        statistics.add_value("reparametrization area jump", jumps[1]);
-        statistics.add_value("reparametrization volume jump", jumps[2]);
-        statistics.add_value("reparametrization angular momentum jump", jumps[3]);
-      }
+    model.safety_valve().add_to_statistics(statistics, jumps);
     statistics.add_value("wall time", elapsed_wall_time());
     statistics.end_row();
 
@@ -437,10 +412,6 @@ namespace FluidSurface
     energy_control.save(data);
     steady_state.save(data);
     data.set("simulation/wall time", elapsed_wall_time());
-    data.set("reparametrization/count", reparametrizations);
-    data.set("reparametrization/quality after last", quality_after_reparametrization);
-    for (unsigned int k = 0; k < largest_reparametrization_jumps.size(); ++k)
-      data.set("reparametrization/largest jump " + std::to_string(k), largest_reparametrization_jumps[k]);
     model.save(data);
     time.save(data);
     diagnostics.save(data);
@@ -490,17 +461,7 @@ namespace FluidSurface
     energy_control.write_summary(text);
     if (steady_state.enabled())
       text << "steady state: " << (steady_state_report.empty() ? "not reached" : steady_state_report) << '\n';
-    if (model.reparametrization_enabled())
-      {
-        text << "re-parametrizations: " << reparametrizations;
-        if (reparametrizations > 0)
-          text << std::scientific << std::setprecision(2)
-               << " (largest jumps: ΔF/F = " << largest_reparametrization_jumps[0]
-               << ", ΔA/A = " << largest_reparametrization_jumps[1]
-               << ", ΔV/V = " << largest_reparametrization_jumps[2]
-               << ", ΔL/L = " << largest_reparametrization_jumps[3] << ")" << std::defaultfloat;
-        text << '\n';
-      }
+    model.safety_valve().write_summary(text);
     text << "LU factorizations: " << model.n_factorizations() << '\n';
     {
       std::ofstream summary(output.directory() + "summary.tmp");

@@ -11,7 +11,7 @@ namespace FluidSurface
   /**
    * The incompressible viscous surface fluid (seed eqs. 1–2): its parameters (`subsection flow`) and the
    * terms of its momentum and continuity equations on the frozen surface S^m (doc/scheme.md, "Unknowns and
-   * one step"). Scene full assembles these terms in FluidDeformableSurface, scene fixed surface in
+   * one step"). Scene full assembles these terms in SurfaceStep, scene fixed surface in
    * SurfaceFlow.
    *
    * A term function returns the integrand of one entry at one quadrature point @p point, without the weight

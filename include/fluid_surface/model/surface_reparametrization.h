@@ -2,19 +2,31 @@
 #define fluid_surface_model_surface_reparametrization_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 
 #include <fluid_surface/geometry/surface_geometry.h>
 
+#include <array>
+#include <functional>
+#include <ostream>
+#include <string>
+
 namespace FluidSurface
 {
+  class CheckpointData;
+  class StatisticsFile;
+  class SurfaceStep;
+  struct StepRequest;
+  struct SurfaceState;
+
   /**
    * The safety valve of the mesh law: a re-parametrization of the current discrete surface S_h at fixed
    * connectivity, for a mesh whose quality (min over cells of σ_min/σ_max of the Jacobian) fell below
    * `quality threshold` q_r.
    *
    * - New nodes, all on S_h: `relaxation iterations` solves of the mesh law alone (the velocity held at zero,
-   *   the tangential damping weak: τ = 10 T_r; FluidDeformableSurface::reparametrize()), each followed by the
+   *   the tangential damping weak: τ = 10 T_r; reparametrize()), each followed by the
    *   closest-point projection of every node onto the surface before it (closest_points()) and the transfer
    *   of the fields. With law `reference` this approaches the minimizer of the membrane energy relative to S₀
    *   among the parametrizations of S_h, which the law itself approaches only on the time scale T_r. The
@@ -22,8 +34,11 @@ namespace FluidSurface
    * - Fields (transfer()): every degree of freedom of the flow takes the value of the old field at the point
    *   of the old surface where its support point now lies (closest-point location, cell by cell).
    *
-   * The model (FluidDeformableSurface::reparametrize()) then restores A, V, the discrete incompressibility and
-   * the momenta. Owns `subsection reparametrization`.
+   * reparametrize() then restores A, V, the discrete incompressibility and the momenta, and refuses a new
+   * mesh that is worse or that changes F by more than `maximum energy jump`.
+   *
+   * Owns `subsection reparametrization`, the count and the largest jumps of the re-parametrizations of a run
+   * (record()), their statistics columns, their summary line and their checkpoint keys `reparametrization/…`.
    */
   class SurfaceReparametrization
   {
@@ -34,6 +49,67 @@ namespace FluidSurface
     /// Reads it; the threshold must lie above the @p mesh_quality_floor at which a run stops.
     void
     parse_parameters(dealii::ParameterHandler &prm, const double mesh_quality_floor);
+
+    /// What one re-parametrization (reparametrize()) did.
+    struct Result
+    {
+      bool        done = false;
+      std::string failure; ///< why it failed (the state is then unchanged), one line
+      double      quality_before = 0, quality_after = 0;
+      double      node_correction = 0; ///< the largest normal move of a node that restored A and V
+    };
+
+    /**
+     * The safety valve on the accepted @p state of @p step: new nodes on the current surface (relaxation solves
+     * of the mesh law, closest_points(), transfer()), then A and V restored (ConservationProjection), the
+     * velocity projected onto the discrete incompressible fields with the step's constraints (volume rate,
+     * momenta on the surface) by one step of the flow with τ = projection_time_step (the limit τ → 0 of the
+     * step: the L² projection with the pressure and the multipliers; the nodes stay where they are), and the
+     * momenta restored exactly. @p run_request is the request of the run's steps (its velocity source and mesh
+     * law); @p total_energy evaluates F of the state (computing the curvature of the geometry). On success the
+     * state is replaced; otherwise it is restored. Either way the geometry's curvature is that of the state.
+     */
+    Result
+    reparametrize(SurfaceStep                   &step,
+                  SurfaceState                  &state,
+                  const StepRequest             &run_request,
+                  const std::function<double()> &total_energy) const;
+    /// τ of the projection step of reparametrize(): viscous and bending terms enter it with a weight ~1e-9 relative.
+    static constexpr double projection_time_step = 1e-9;
+
+    /// F, A, V and L = ∫x × u of a state, as the statistics measure them.
+    struct Measures
+    {
+      double               energy = 0, area = 0, volume = 0;
+      dealii::Tensor<1, 3> angular_momentum;
+    };
+    /// The relative jumps |after − before|/|before| of F, A, V and L (|ΔL|/|L|) of a re-parametrization.
+    using Jumps = std::array<double, 4>;
+    /**
+     * Counts the re-parametrization @p result of a mesh of quality @p quality: a success with the measures
+     * @p before and @p after it (returns the jumps), or a failure (returns zeros; the next one is then not due
+     * before the quality has fallen by another 10 %).
+     */
+    Jumps
+    record(const Result &result, const double quality, const Measures &before, const Measures &after);
+    /// Whether the mesh of the accepted state, of quality @p quality, needs a re-parametrization (due()).
+    bool
+    due(const double quality) const
+    {
+      return due(quality, quality_after_last);
+    }
+    /// The statistics columns of a step whose re-parametrization made the @p jumps (zeros: none); none if off.
+    void
+    add_to_statistics(StatisticsFile &statistics, const Jumps &jumps) const;
+    /// The summary line: the count and the largest jumps (nothing if off).
+    void
+    write_summary(std::ostream &text) const;
+    /// The counters under `reparametrization/…`.
+    void
+    save(CheckpointData &data) const;
+    /// Reads them (checkpoints without them: the counters of a run without re-parametrizations).
+    void
+    load(const CheckpointData &data);
 
     /// Whether the valve is on (q_r > 0).
     bool
@@ -74,6 +150,13 @@ namespace FluidSurface
     double       quality_threshold = 0.1; ///< q_r
     unsigned int iterations        = 5;   ///< n_r, solves of the mesh law that place the new nodes
     double       maximum_energy_jump = 1e-2; ///< ε_F: a re-parametrization that changes F by more is not taken
+
+  private:
+    unsigned int count = 0; ///< re-parametrizations so far
+    /// The largest relative jumps of F, A, V and L of the re-parametrizations so far.
+    Jumps largest_jumps = {{0, 0, 0, 0}};
+    /// The mesh quality the last re-parametrization left (1 before any).
+    double quality_after_last = 1;
   };
 } // namespace FluidSurface
 

@@ -76,21 +76,20 @@ namespace FluidSurface
     /// Makes the solved step of size @p tau the current state; τ for the next step as the @p energy check says.
     void
     accept_step(const double tau, const Energies &candidate, const EnergyStepController::Decision &energy);
-    /// The relative jumps |after − before|/|before| of F, A, V and L (|ΔL|/|L|) of a re-parametrization.
-    using ReparametrizationJumps = std::array<double, 4>;
     /**
      * One statistics row and screen report of the accepted state (with the @p jumps of the re-parametrization
      * of this step, zero if none); returns its measures.
      */
     Diagnostics::Values
-    record_step(const double                              tau,
-                const FluidDeformableSurface::StepResult &step,
-                const ReparametrizationJumps             &jumps = {{0, 0, 0, 0}});
+    record_step(const double                           tau,
+                const SurfaceStep::Result             &step,
+                const SurfaceReparametrization::Jumps &jumps = {{0, 0, 0, 0}});
     /**
      * The safety valve after an accepted step: re-parametrizes the surface when its mesh quality is due
-     * (FluidDeformableSurface::reparametrize()) and returns the jumps, measured as the statistics measure them.
+     * (SurfaceReparametrization::due()), records it with the valve and returns the jumps, measured as the
+     * statistics measure them.
      */
-    ReparametrizationJumps
+    SurfaceReparametrization::Jumps
     reparametrize_if_due();
     /// K − |L|²/(2λ₃) of @p v: zero only for a rigid rotation about the axis of largest inertia.
     static double
@@ -153,11 +152,6 @@ namespace FluidSurface
     double       wall_time_before_restart = 0; ///< wall time of the runs before the checkpoint resumed from
     unsigned int steps_this_run           = 0;
     unsigned int last_checkpoint_step     = 0; ///< the step of the last checkpoint written or resumed from
-    unsigned int reparametrizations       = 0; ///< re-parametrizations so far
-    /// The largest relative jumps of F, A, V and L of the re-parametrizations so far.
-    ReparametrizationJumps largest_reparametrization_jumps = {{0, 0, 0, 0}};
-    /// The mesh quality the last re-parametrization left (1 before any).
-    double quality_after_reparametrization = 1;
   };
 } // namespace FluidSurface
 
