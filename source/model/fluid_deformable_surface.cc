@@ -46,6 +46,7 @@ namespace FluidSurface
     MeshRedistribution::declare_parameters(prm);
     ConservationProjection::declare_parameters(prm);
     SurfaceReparametrization::declare_parameters(prm);
+    GeometryIteration::declare_parameters(prm);
     prm.enter_subsection("initial state");
     prm.declare_entry("angular velocity",
                       "0",
@@ -93,6 +94,7 @@ namespace FluidSurface
     redistribution.parse_parameters(prm);
     conservation.parse_parameters(prm);
     reparametrization.parse_parameters(prm, redistribution.mesh_quality_floor);
+    geometry_iteration.parse_parameters(prm);
     momentum_constraints = MomentumConstraints(flow);
     // The linear solver of the step (entries shared with scene fixed surface).
     linear_solver.parse_parameters(prm);
@@ -318,6 +320,20 @@ namespace FluidSurface
         }
   }
 
+  double
+  FluidDeformableSurface::largest_node_move(const VectorType &a, const VectorType &b) const
+  {
+    double largest = 0;
+    for (const auto &node : new_position_nodes)
+      {
+        double square = 0;
+        for (unsigned int d = 0; d < 3; ++d)
+          square += (a[node[d]] - b[node[d]]) * (a[node[d]] - b[node[d]]);
+        largest = std::max(largest, square);
+      }
+    return std::sqrt(Utilities::MPI::max(largest, geometry.get_communicator()));
+  }
+
   void
   FluidDeformableSurface::copy_new_position_to_geometry(const VectorType &flow_solution)
   {
@@ -464,6 +480,8 @@ namespace FluidSurface
       , old_velocity(gauss.size())
       , old_velocity_gradient(gauss.size())
       , nodal_smooth_normal(nodal.size())
+      , old_position(gauss.size())
+      , nodal_old_position(nodal.size())
       , reference_gradient(gauss.size())
     {}
     AssemblyScratch(const AssemblyScratch &other)
@@ -482,6 +500,8 @@ namespace FluidSurface
     std::vector<Tensor<1, 3>> old_velocity;           ///< u^m
     std::vector<Tensor<2, 3>> old_velocity_gradient;  ///< G^m
     std::vector<Tensor<1, 3>> nodal_smooth_normal;    ///< ñ^m at the nodal points
+    std::vector<Tensor<1, 3>> old_position;           ///< X^m at the Gauss points
+    std::vector<Tensor<1, 3>> nodal_old_position;     ///< X^m at the nodal points
     // Law reference: ∇_{S^m}X₀ at the Gauss points, ñ^m by node, the rows of Y before their projection.
     std::vector<Tensor<2, 3>> reference_gradient;
     std::vector<Tensor<1, 3>> node_normals;
@@ -490,7 +510,7 @@ namespace FluidSurface
   };
 
   void
-  FluidDeformableSurface::assemble(const double tau, const RigidMotion &motion)
+  FluidDeformableSurface::assemble(const double tau, const RigidMotion &motion, const SurfaceGeometry::Measures &old_measures)
   {
     system_matrix = 0;
     system_rhs    = 0;
@@ -504,7 +524,7 @@ namespace FluidSurface
     const SurfaceGeometry::Measures m = geometry.measure();
     // div_P u = s with s = −(A^m − A₀)/(τ_c A^m) returns any area drift (∫div_P u = dA/dt);
     // τ_c = max(τ, τ_drift) keeps the correction bounded when a rejected step shrinks τ.
-    const double area_rate = -(m.area - target_area) / (drift_time(tau) * m.area);
+    const double area_rate = -(old_measures.area - target_area) / (drift_time(tau) * old_measures.area);
     // The mesh moves along with the rigid motion R of the shape (fit of u^m·ν): law bgn relaxes towards
     // X^m + τR, law reference carries the nodes by the rotation itself.
     const bool        carry   = redistribution.follow_rigid_motion &&
@@ -581,10 +601,12 @@ namespace FluidSurface
     // Gauss points: the flow terms, the bending force and scalar, (∇_S Y, ∇_S η), the global columns.
     scratch.flow.reinit(cell);
     scratch.geometry.reinit(geometry_cell);
-    scratch.geometry[vector].get_function_values(geometry.normal_field(), scratch.smooth_normal);
-    scratch.geometry[vector].get_function_gradients(geometry.normal_field(), scratch.smooth_normal_gradient);
+    const VectorType &normal = assembly_normal != nullptr ? *assembly_normal : geometry.normal_field();
+    scratch.geometry[vector].get_function_values(normal, scratch.smooth_normal);
+    scratch.geometry[vector].get_function_gradients(normal, scratch.smooth_normal_gradient);
     scratch.flow[vector].get_function_values(current, scratch.old_velocity);
     scratch.flow[vector].get_function_gradients(current, scratch.old_velocity_gradient);
+    scratch.geometry[vector].get_function_values(current_position, scratch.old_position);
     if (reference_law)
       scratch.flow[FEValuesExtractors::Vector(position_component)].get_function_gradients(
         reference_position, scratch.reference_gradient);
@@ -597,7 +619,7 @@ namespace FluidSurface
                      scratch.smooth_normal_gradient[q],
                      scratch.old_velocity[q],
                      scratch.old_velocity_gradient[q]);
-        assemble_flow_terms(point, tau, area_rate, carried, local);
+        assemble_flow_terms(point, Point<3>(scratch.old_position[q]), tau, area_rate, carried, local);
         if (prescribed_velocity == nullptr)
           bending.assemble_force(point, *layout, local.matrix);
         bending.assemble_bending_scalar(point, *layout, local.matrix);
@@ -629,12 +651,13 @@ namespace FluidSurface
     // Nodal points: the kinematics (κ rows) and the nodal terms of the redistribution (Y rows).
     scratch.flow_nodal.reinit(cell);
     scratch.geometry_nodal.reinit(geometry_cell);
-    scratch.geometry_nodal[vector].get_function_values(geometry.normal_field(), scratch.nodal_smooth_normal);
+    scratch.geometry_nodal[vector].get_function_values(normal, scratch.nodal_smooth_normal);
+    scratch.geometry_nodal[vector].get_function_values(current_position, scratch.nodal_old_position);
     NodalPointValues &nodal = scratch.nodal_point;
     for (unsigned int q = 0; q < scratch.flow_nodal.n_quadrature_points; ++q)
       {
         nodal.reinit(scratch.flow_nodal, q, scratch.nodal_smooth_normal[q]);
-        const Point<3> &x = nodal.position;
+        const Point<3> x(scratch.nodal_old_position[q]); // X^m (the mapped point unless the geometry is iterated)
         if (reference_law)
           {
             // In the carried frame: Ỹ·ñ = X^m·ñ + τ(ũ − R)·ñ, damped towards X^m.
@@ -665,6 +688,7 @@ namespace FluidSurface
 
   void
   FluidDeformableSurface::assemble_flow_terms(const SurfacePointValues &point,
+                                              const Point<3>           &old_point,
                                               const double              tau,
                                               const double              area_rate,
                                               const RigidMotion        &carried,
@@ -699,7 +723,7 @@ namespace FluidSurface
     // position relative to the carry; advance() maps back): the frame's rotation adds (Ω × ũ, v), and the mesh
     // velocity in the convection is R + (Ỹ − X^m)/τ, i.e. W = X^m − τR.
     const bool     carried_frame = redistribution.law == MeshRedistribution::Law::reference;
-    const Point<3> start         = carried_frame ? p.position - tau * carried.value(p.position) : p.position;
+    const Point<3> start         = carried_frame ? old_point - tau * carried.value(old_point) : old_point;
     for (const unsigned int i : layout->velocity)
       {
         if (flow.inertia)
@@ -913,9 +937,10 @@ namespace FluidSurface
     // Law reference solves the step in the frame carried by the rigid motion of the shape (assemble_cell()).
     const bool carried_frame = redistribution.law == MeshRedistribution::Law::reference &&
                                redistribution.follow_rigid_motion;
+    const SurfaceGeometry::Measures old_measures = geometry.measure();
     {
       TimerSection section(step_timer, "assembly");
-      assemble(tau, motion);
+      assemble(tau, motion, old_measures);
     }
 
     // Bordering: the global constraints c_k·x = g_k with multipliers μ_k (force μ_k c_k in the
@@ -930,8 +955,10 @@ namespace FluidSurface
       {
         columns.push_back(&volume_column);
         rows.push_back(&volume_column);
-        rates.push_back(-(geometry.measure().volume - target_volume) / drift_time(tau));
+        rates.push_back(-(old_measures.volume - target_volume) / drift_time(tau));
       }
+    // The momentum targets in the frame of the step (the constant parts of the rows are added by set_rates()).
+    std::array<double, 6> targets = {{0, 0, 0, 0, 0, 0}};
     if (rigid_rows_on)
       {
         // The constant parts of the linearized momenta on S^{m+1} (see assemble()) move to the right:
@@ -941,7 +968,6 @@ namespace FluidSurface
         const std::array<double, 6> old_momenta =
           flow.inertia ? motion.momenta : std::array<double, 6>{{0, 0, 0, 0, 0, 0}};
         const double fraction = flow.inertia ? std::min(1.0, tau / drift_time(tau)) : 1.0;
-        std::array<double, 6> targets;
         for (unsigned int k = 0; k < 6; ++k)
           targets[k] = old_momenta[k] + fraction * (rigid_targets[k] - old_momenta[k]);
         if (carried_frame)
@@ -966,54 +992,116 @@ namespace FluidSurface
           {
             columns.push_back(&rigid_columns[k]);
             rows.push_back(&rigid_rows[k]);
-            rates.push_back(targets[k] + (k < 3 ? 2.0 : 3.0) * old_momenta[k]);
           }
       }
+    const unsigned int first_rigid = volume_row ? 1 : 0;
+    // The rows are linearized about the surface they were assembled on: their constant parts are the momenta
+    // of u^m there (@p assembly_momenta).
+    const auto set_rates = [&](const std::array<double, 6> &assembly_momenta) {
+      rates.resize(first_rigid);
+      if (rigid_rows_on)
+        for (unsigned int k = 0; k < 6; ++k)
+          rates.push_back(targets[k] + (k < 3 ? 2.0 : 3.0) * (flow.inertia ? assembly_momenta[k] : 0.0));
+    };
+    set_rates(motion.momenta);
 
     AssertDimension(columns.size(), (volume_row ? 1 : 0) + (rigid_rows_on ? 6 : 0));
     AssertDimension(rates.size(), columns.size());
     const BorderedSystem system(system_matrix, columns, rows);
     BorderedSystem::BlockVector solution = system.make_vector(system_rhs), rhs = solution;
-    rhs.block(0) = system_rhs;
-    BorderedSystem::set_multipliers(rhs, rates);
-    try
+    if (last_solution.n_blocks() == 2 && last_solution.block(1).size() == columns.size())
+      solution = last_solution;
+    const auto solve = [&]() {
+      rhs.block(0) = system_rhs;
+      BorderedSystem::set_multipliers(rhs, rates);
+      try
+        {
+          const ReusedFactorizationSolver::Result solve = solve_system(system, solution, rhs);
+          result.linear_iterations += solve.iterations;
+          result.factorized = result.factorized || solve.factorized;
+          last_solution     = solution;
+          const std::vector<double> mu = BorderedSystem::multipliers(solution);
+          if (volume_row)
+            result.gamma = mu[0];
+          double rigid = 0;
+          for (unsigned int k = first_rigid; k < mu.size(); ++k)
+            rigid += mu[k] * mu[k];
+          result.rigid_force = std::sqrt(rigid);
+        }
+      catch (const LinearSolverError &exc)
+        {
+          linear_solver.request_factorization();
+          result.failure         = std::string("linear solver failed: ") + exc.what();
+          result.failure_details = exc.details();
+          return false;
+        }
+      catch (const std::exception &exc)
+        {
+          linear_solver.request_factorization();
+          result.failure         = "linear solver failed: " + one_line_message(exc, 200);
+          result.failure_details = exc.what();
+          return false;
+        }
+      if (!std::isfinite(solution.block(0).l2_norm()))
+        {
+          result.failure = "the solution is not finite";
+          return false;
+        }
+      constraints.distribute(solution.block(0));
+      return true;
+    };
+    if (!solve())
+      return result;
+
+    // The implicit geometry: the same step assembled again on the surface of its own solution (in the frame of
+    // the step, before the carry), until the nodes stop moving.
+    if (geometry_iteration.enabled() && prescribed_velocity == nullptr && !relaxing_mesh)
       {
-        if (last_solution.n_blocks() == 2 && last_solution.block(1).size() == columns.size())
-          solution = last_solution;
-        const ReusedFactorizationSolver::Result solve = solve_system(system, solution, rhs);
-        result.linear_iterations                      = solve.iterations;
-        result.factorized                             = solve.factorized;
-        last_solution                                 = solution;
-        const std::vector<double> mu          = BorderedSystem::multipliers(solution);
-        const unsigned int        first_rigid = volume_row ? 1 : 0;
-        if (volume_row)
-          result.gamma = mu[0];
-        double rigid = 0;
-        for (unsigned int k = first_rigid; k < mu.size(); ++k)
-          rigid += mu[k] * mu[k];
-        result.rigid_force = std::sqrt(rigid);
-      }
-    catch (const LinearSolverError &exc)
-      {
-        linear_solver.request_factorization();
-        result.failure         = std::string("linear solver failed: ") + exc.what();
-        result.failure_details = exc.details();
-        return result;
-      }
-    catch (const std::exception &exc)
-      {
-        linear_solver.request_factorization();
-        result.failure         = "linear solver failed: " + one_line_message(exc, 200);
-        result.failure_details = exc.what();
-        return result;
+        const double node_spacing =
+          std::sqrt(old_measures.area / geometry.triangulation().n_global_active_cells()) / geometry.degree();
+        using Implicit            = GeometryIteration::Implicit;
+        const Implicit   implicit = geometry_iteration.implicit;
+        const VectorType old_normal(geometry.normal_field());
+        VectorType       iterate_normal;
+        bool             converged = false;
+        for (unsigned int k = 1; k <= geometry_iteration.max_iterations && !converged; ++k)
+          {
+            candidate = solution.block(0);
+            copy_new_position_to_geometry(candidate);
+            {
+              TimerSection section(step_timer, "assembly");
+              geometry.compute_curvature();
+              if (implicit == Implicit::normal)
+                {
+                  iterate_normal = geometry.normal_field();
+                  assembly_normal = &iterate_normal;
+                  restore_last_state_geometry();
+                }
+              else if (implicit == Implicit::metric)
+                assembly_normal = &old_normal;
+              assemble(tau, motion, old_measures);
+              assembly_normal = nullptr;
+              if (rigid_rows_on && flow.inertia && implicit != Implicit::normal)
+                set_rates(rigid_motion(current).momenta);
+            }
+            const VectorType previous = solution.block(0);
+            if (!solve())
+              return result;
+            result.geometry_iterations = k;
+            result.geometry_change     = largest_node_move(solution.block(0), previous) / node_spacing;
+            converged                  = result.geometry_change <= geometry_iteration.tolerance;
+          }
+        if (!converged)
+          {
+            std::ostringstream why;
+            why << "the geometry iteration did not converge: after " << geometry_iteration.max_iterations
+                << " re-assemblies the nodes still moved by " << std::setprecision(3) << result.geometry_change
+                << " h (tolerance 'geometry iteration/tolerance' = " << geometry_iteration.tolerance << ")";
+            result.failure = why.str();
+            return result;
+          }
       }
     VectorType &x1 = solution.block(0);
-    if (!std::isfinite(x1.l2_norm()))
-      {
-        result.failure = "the solution is not finite";
-        return result;
-      }
-    constraints.distribute(x1);
     candidate = x1;
     {
       TimerSection section(step_timer, "diagnostics");
@@ -1106,6 +1194,7 @@ namespace FluidSurface
       std::string  failure;
       for (unsigned int iteration = 0; iteration < reparametrization.iterations && failure.empty(); ++iteration)
         {
+          current_position            = surface; // each relaxation starts from the surface it projects onto
           const StepResult relaxation = advance(tau);
           if (!relaxation.solved)
             {
@@ -1187,11 +1276,17 @@ namespace FluidSurface
   void
   FluidDeformableSurface::restore_last_state()
   {
+    restore_last_state_geometry();
+    geometry.compute_curvature();
+    linear_solver.request_factorization();
+  }
+
+  void
+  FluidDeformableSurface::restore_last_state_geometry()
+  {
     VectorType position(geometry.locally_owned_dofs(), geometry.get_communicator());
     position = current_position;
     geometry.set_position(position);
-    geometry.compute_curvature();
-    linear_solver.request_factorization();
   }
 
   double

@@ -210,6 +210,10 @@ namespace FluidSurface
       advice = "the linear solver failed (its report is in " + output.directory() + "error.log); try a smaller "
                "'time stepping/maximum time step', 'linear solver/reuse factorization = false' or another "
                "'linear solver/direct solver'; ";
+    else if (reason.rfind("the geometry iteration did not converge", 0) == 0)
+      advice = "the step's geometry iteration did not contract at every τ tried; try a larger 'geometry "
+               "iteration/maximum iterations' or 'geometry iteration/tolerance', or 'maximum iterations = 0' (the "
+               "lagged step); ";
     else if (reason.rfind("the solution is not finite", 0) == 0)
       advice = "the step's solution was not finite; try a smaller 'time stepping/maximum time step' or a finer "
                "'geometry/refinement', and check that the physical parameters are of order 1; ";
@@ -369,6 +373,11 @@ namespace FluidSurface
     statistics.add_value("linear iterations", step.linear_iterations);
     statistics.add_value("factorized", step.factorized ? 1 : 0);
     statistics.add_value("rigid multiplier", step.rigid_force);
+    if (model.iterates_geometry())
+      {
+        statistics.add_value("geometry iterations", step.geometry_iterations);
+        statistics.add_value("geometry change", step.geometry_change);
+      }
     if (model.reparametrization_enabled())
       {
         statistics.add_value("reparametrizations", reparametrizations);
@@ -398,6 +407,9 @@ namespace FluidSurface
           pcout << std::setprecision(3) << std::scientific << "    E(L2) = " << v.l2_distance << " (axial "
                 << v.l2_distance_axial << ", equatorial " << v.l2_distance_equatorial << ")" << std::defaultfloat
                 << '\n';
+        if (model.iterates_geometry())
+          pcout << "    geometry iterations " << step.geometry_iterations << ", last node move " << std::setprecision(2)
+                << std::scientific << step.geometry_change << " h" << std::defaultfloat << '\n';
         if (output.report_wall_time())
           pcout << "    " << std::setprecision(3) << per_step << " s/step, ETA " << static_cast<long>(eta) << " s\n";
         pcout << std::flush;

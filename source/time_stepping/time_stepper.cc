@@ -32,7 +32,11 @@ namespace FluidSurface
                       "1e-2",
                       RealRange::at_least(1e-12),
                       "Initial time step τ₀ ≥ 1e-12 (with adaptive = true: τ_min ≤ τ₀ ≤ τ_max).");
-    prm.declare_entry("adaptive", "true", Patterns::Bool(), "Adapt τ: shrink on rejected steps, grow on easy ones.");
+    prm.declare_entry("adaptive",
+                      "true",
+                      Patterns::Bool(),
+                      "Adapt τ: shrink on rejected steps, grow on easy ones. false: every step is 'time step' (also "
+                      "after a resume) and a rejected step stops the run.");
     prm.declare_entry("minimum time step",
                       "1e-7",
                       RealRange::at_least(1e-12),
@@ -146,8 +150,9 @@ namespace FluidSurface
   void
   TimeStepper::load(const CheckpointData &data)
   {
+    // With adaptive = false the step is the entry 'time step' of this run, whatever the checkpoint's was.
     set_state({data.get_double("time stepping/time"),
-               data.get_double("time stepping/tau"),
+               adaptive ? data.get_double("time stepping/tau") : tau,
                data.get_unsigned("time stepping/steps"),
                data.get_unsigned("time stepping/rejected steps"),
                data.get_unsigned("time stepping/easy steps")});

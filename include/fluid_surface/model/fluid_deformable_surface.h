@@ -19,6 +19,7 @@
 #include <fluid_surface/model/bending_force.h>
 #include <fluid_surface/model/conservation_projection.h>
 #include <fluid_surface/model/dof_layout.h>
+#include <fluid_surface/model/geometry_iteration.h>
 #include <fluid_surface/model/local_system.h>
 #include <fluid_surface/model/mesh_redistribution.h>
 #include <fluid_surface/model/momentum_constraints.h>
@@ -62,6 +63,8 @@ namespace FluidSurface
       double       rigid_force       = 0; ///< Stokes limit: |λ| of the multipliers of ∫u = 0, ∫X×u = 0
       double       node_correction   = 0; ///< ConservationProjection: the largest normal move of a node
       double       momentum_correction = 0; ///< ConservationProjection: |P₀ − P| + |L₀ − L| before it
+      unsigned int geometry_iterations = 0; ///< re-assemblies on the step's own surface (GeometryIteration)
+      double       geometry_change     = 0; ///< the last iterate's largest node move over h (0 without iteration)
     };
 
     /// What a re-parametrization (reparametrize()) did.
@@ -211,6 +214,12 @@ namespace FluidSurface
     {
       linear_solver.release();
     }
+    /// Whether the step iterates its geometry (`geometry iteration/maximum iterations` > 0).
+    bool
+    iterates_geometry() const
+    {
+      return geometry_iteration.enabled();
+    }
     /// Whether ∂_t u is assembled (false: the Stokes limit, whose energy F is the bending energy alone).
     bool
     has_inertia() const
@@ -282,12 +291,14 @@ namespace FluidSurface
     /// Per-thread FEValues and point values of assemble_cell().
     struct AssemblyScratch;
     /**
-     * Assembles the step system of size @p tau on S^m (WorkStream over the cells): matrix, right-hand side,
-     * volume column and, if active, the rigid-motion columns and rows. @p motion is the rigid motion of the
-     * shape (the target of the tangential damping) and the momenta of u^m.
+     * Assembles the step system of size @p tau on the geometry's surface (S^m, or an iterate S^{m+1,k} of
+     * GeometryIteration; WorkStream over the cells): matrix, right-hand side, volume column and, if active, the
+     * rigid-motion columns and rows. The old position X^m is current_position, u^m is current. @p motion is the
+     * rigid motion of the shape (the target of the tangential damping) and the momenta of u^m; @p old_measures
+     * those of S^m (the area drift).
      */
     void
-    assemble(const double tau, const RigidMotion &motion);
+    assemble(const double tau, const RigidMotion &motion, const SurfaceGeometry::Measures &old_measures);
     /// One cell of assemble(): the Gauss-point terms, then the nodal terms (·,·)_h.
     void
     assemble_cell(const typename dealii::DoFHandler<2, 3>::active_cell_iterator &cell,
@@ -298,7 +309,7 @@ namespace FluidSurface
                   AssemblyScratch                                               &scratch,
                   LocalSystem                                                   &local) const;
     /**
-     * The momentum and continuity rows at one Gauss point, the terms of SurfaceFluid:
+     * The momentum and continuity rows at one Gauss point (@p old_point: X^m there), the terms of SurfaceFluid:
      * (1/τ)(u − u^m, v) + (G u^m, v) − (1/τ)(G^m (Y − X^m), v) + (2/Re)(σ(u), σ(v)) − (p, div_P v) (in the
      * Stokes limit ε(u, v) instead of the inertia, no convection) and −(div_P u, q) = −(s, q), s = @p area_rate.
      * With law reference in the frame carried by the rigid motion @p carried: (1/τ)(u − Q u^m, v) + (Ω × u, v)
@@ -306,10 +317,17 @@ namespace FluidSurface
      */
     void
     assemble_flow_terms(const SurfacePointValues &point,
+                        const dealii::Point<3>   &old_point,
                         const double              tau,
                         const double              area_rate,
                         const RigidMotion        &carried,
                         LocalSystem              &local) const;
+    /// The largest distance between the new positions Y of @p a and @p b (flow numbering) over the nodes.
+    double
+    largest_node_move(const VectorType &a, const VectorType &b) const;
+    /// The geometry's position back to X^m (its curvature and normal are not recomputed).
+    void
+    restore_last_state_geometry();
     /// Y of @p flow_solution → the geometry's position field.
     void
     copy_new_position_to_geometry(const VectorType &flow_solution);
@@ -339,6 +357,9 @@ namespace FluidSurface
     MomentumConstraints momentum_constraints;
     ConservationProjection conservation;
     SurfaceReparametrization reparametrization;
+    GeometryIteration      geometry_iteration;
+    /// The normal field ñ the assembly uses instead of the geometry's (GeometryIteration::Implicit), or none.
+    const VectorType      *assembly_normal = nullptr;
 
     // `subsection initial state`: u₀ = U + ω₀ e × (x − c) + ε_u r(x), the shape perturbed by ε_X.
     dealii::Tensor<1, 3> translation_velocity;    ///< U
