@@ -3,8 +3,9 @@
 # symmetry-breaking transformation) of the seed's prolate and oblate, for the lagged step and the step with
 # implicit geometry (subsection geometry iteration).
 #   benchmarks/step_limit/run.sh [--quick]        from the repository root, after building
-# 1. A start checkpoint per case: prm/prolate_long.prm to t = 18 (inside its transformation at refinements 3
-#    and 4), prm/oblate_long.prm to t = 4.75, at the case's refinement (kept in $WORK and reused).
+# 1. A start checkpoint per case inside the fastest part of its transformation: prm/prolate_long.prm to t = 20
+#    (refinement 3) or 18 (refinement 4), prm/oblate_long.prm to t = 4.75, at the case's refinement (kept in
+#    $WORK and reused).
 # 2. From it, a window of WINDOW time units at each fixed τ (adaptive = false, so that one rejected step, an
 #    energy rise above 'energy tolerance', ends the case) for each scheme.
 # Environment: CASES (default "prolate:3 oblate:3"), TAUS, SCHEMES (default "lagged implicit"), WINDOW (0.5),
@@ -15,7 +16,7 @@ cd "$(dirname "$0")/../.."
 here=benchmarks/step_limit
 exe=${EXE:-$PWD/build/fluid_surface}
 cases=${CASES:-"prolate:3 oblate:3"}
-taus=${TAUS:-"0.1 0.05 0.025 0.0125 0.00625 0.003125"}
+taus=${TAUS-"0.1 0.05 0.025 0.0125 0.00625 0.003125"}
 schemes=${SCHEMES:-"lagged implicit"}
 window=${WINDOW:-0.5}
 iterations=${ITERATIONS:-10}
@@ -33,7 +34,8 @@ scheme_lines() {
 
 for c in $cases; do
   shape=${c%%:*}; r=${c##*:}
-  case $shape in prolate) t0=18;; oblate) t0=4.75;; esac
+  # inside the fastest part of the transformation (benchmarks/phase3/experiments: the τ of the adaptive runs)
+  case $shape:$r in prolate:3) t0=20;; prolate:*) t0=18;; oblate:*) t0=4.75;; esac
   start=$work/start_${shape}_r$r
   if [ ! -f $start/checkpoint/last ] || ! grep -q "status: completed" $start/summary 2>/dev/null; then
     cat > $work/start_${shape}_r$r.prm <<PRM

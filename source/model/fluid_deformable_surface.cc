@@ -22,6 +22,7 @@
 #include <fluid_surface/model/fluid_deformable_surface.h>
 
 #include <cmath>
+#include <map>
 #include <iomanip>
 #include <sstream>
 #include <limits>
@@ -318,6 +319,23 @@ namespace FluidSurface
                 }
             }
         }
+
+    // The geometry DoFs of the owned nodes of Y (the error estimate reads X^m and ñ^m there).
+    std::map<types::global_dof_index, types::global_dof_index> geometry_dof;
+    for (const auto &pair : position_pairs)
+      geometry_dof[pair.first] = pair.second;
+    new_position_geometry_dofs.clear();
+    for (const auto &node : new_position_nodes)
+      {
+        std::array<types::global_dof_index, 3> geo;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            const auto found = geometry_dof.find(node[d]);
+            AssertThrow(found != geometry_dof.end(), ExcMessage("a node of Y without its position DoF"));
+            geo[d] = found->second;
+          }
+        new_position_geometry_dofs.push_back(geo);
+      }
   }
 
   double
@@ -938,6 +956,8 @@ namespace FluidSurface
     const bool carried_frame = redistribution.law == MeshRedistribution::Law::reference &&
                                redistribution.follow_rigid_motion;
     const SurfaceGeometry::Measures old_measures = geometry.measure();
+    shape_radius                                 = std::sqrt(old_measures.area / (4 * numbers::PI));
+    const VectorType                old_normal(geometry.normal_field()); // ñ^m (the geometry may be iterated)
     {
       TimerSection section(step_timer, "assembly");
       assemble(tau, motion, old_measures);
@@ -1061,7 +1081,6 @@ namespace FluidSurface
           std::sqrt(old_measures.area / geometry.triangulation().n_global_active_cells()) / geometry.degree();
         using Implicit            = GeometryIteration::Implicit;
         const Implicit   implicit = geometry_iteration.implicit;
-        const VectorType old_normal(geometry.normal_field());
         VectorType       iterate_normal;
         bool             converged = false;
         for (unsigned int k = 1; k <= geometry_iteration.max_iterations && !converged; ++k)
@@ -1102,6 +1121,8 @@ namespace FluidSurface
           }
       }
     VectorType &x1 = solution.block(0);
+    if (estimating_error)
+      result.error_estimate = estimate_error(x1, old_normal, tau);
     candidate = x1;
     {
       TimerSection section(step_timer, "diagnostics");
@@ -1129,9 +1150,42 @@ namespace FluidSurface
     return result;
   }
 
+  double
+  FluidDeformableSurface::estimate_error(const VectorType &new_state, const VectorType &old_normal, const double tau)
+  {
+    if (candidate_normal_speed.size() != current.size())
+      candidate_normal_speed.reinit(owned, geometry.get_communicator());
+    double largest_difference = 0;
+    for (unsigned int n = 0; n < new_position_nodes.size(); ++n)
+      {
+        const auto  &node = new_position_nodes[n];
+        Tensor<1, 3> move, normal;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            move[d]   = new_state[node[d]] - current_position[new_position_geometry_dofs[n][d]];
+            normal[d] = old_normal[new_position_geometry_dofs[n][d]];
+          }
+        const double w = move * normal / tau;
+        candidate_normal_speed[node[0]] = w;
+        if (normal_speed_step > 0)
+          largest_difference = std::max(largest_difference, std::abs(w - normal_speed[node[0]]));
+      }
+    candidate_normal_speed.compress(VectorOperation::insert);
+    largest_difference = Utilities::MPI::max(largest_difference, geometry.get_communicator());
+    if (normal_speed_step == 0)
+      return -1;
+    return tau * tau / (tau + normal_speed_step) * largest_difference / shape_radius;
+  }
+
   void
   FluidDeformableSurface::accept()
   {
+    if (estimating_error)
+      {
+        normal_speed.reinit(owned, relevant, geometry.get_communicator());
+        normal_speed      = candidate_normal_speed;
+        normal_speed_step = last_step_tau;
+      }
     old_position     = current_position;
     current_position = geometry.position();
     current          = candidate;
@@ -1230,6 +1284,7 @@ namespace FluidSurface
     current          = state;
     current_position = geometry.position();
     old_position     = current_position;
+    normal_speed_step = 0; // the transferred state has no history
     last_solution.reinit(0);
     linear_solver.request_factorization();
 
@@ -1332,6 +1387,11 @@ namespace FluidSurface
       data.set("model/rigid target " + std::to_string(k), rigid_targets[k]);
     data.set("model/last tau", last_tau);
     data.set("model/last step tau", last_step_tau);
+    if (estimating_error && normal_speed_step > 0)
+      {
+        data.set("model/normal speed step", normal_speed_step);
+        data.set_fields("normal speed", dofs, {&normal_speed});
+      }
     // The seeded random fields are drawn in setup() only; the seed is kept for the record.
     data.set("model/random seed", random_seed);
   }
@@ -1364,6 +1424,15 @@ namespace FluidSurface
       rigid_targets[k] = data.get_double("model/rigid target " + std::to_string(k));
     last_tau      = data.get_double("model/last tau");
     last_step_tau = data.get_double("model/last step tau");
+    normal_speed_step = 0;
+    if (estimating_error && data.has("model/normal speed step"))
+      {
+        VectorType w;
+        data.get_fields("normal speed", dofs, {&w});
+        normal_speed.reinit(owned, relevant, comm);
+        normal_speed      = w;
+        normal_speed_step = data.get_double("model/normal speed step");
+      }
     geometry.compute_curvature();
   }
 } // namespace FluidSurface

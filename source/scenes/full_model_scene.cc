@@ -35,6 +35,7 @@ namespace FluidSurface
     time.parse_parameters(prm);
     energy_control = EnergyStepController(time.energy_tolerance());
     model.parse_parameters(prm, time.maximum_step_size());
+    model.set_error_estimation(time.error_control());
     diagnostics.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
     steady_state.parse_parameters(prm);
@@ -95,6 +96,14 @@ namespace FluidSurface
                 retry_step(tau, step.failure, step.failure_details);
                 continue;
               }
+            if (time.error_control() && step.error_estimate > time.error_bound())
+              {
+                std::ostringstream reason;
+                reason << "local error estimate " << std::setprecision(3) << step.error_estimate
+                       << " above 'error tolerance' " << time.error_bound();
+                retry_step(tau, reason.str(), "", std::max(0.2, time.error_step_factor(step.error_estimate)));
+                continue;
+              }
             const Energies                       candidate = candidate_energies();
             const EnergyStepController::Decision energy =
               energy_control.decide(total_energy, candidate.total, tau);
@@ -103,7 +112,7 @@ namespace FluidSurface
                 retry_step(tau, energy.reason, "");
                 continue;
               }
-            accept_step(tau, candidate, energy);
+            accept_step(tau, step.error_estimate, candidate, energy);
             const ReparametrizationJumps jumps  = reparametrize_if_due();
             const Diagnostics::Values    values = record_step(tau, step, jumps);
             check_mesh_quality();
@@ -194,7 +203,10 @@ namespace FluidSurface
   }
 
   void
-  FullModelScene::retry_step(const double tau, const std::string &reason, const std::string &solver_report)
+  FullModelScene::retry_step(const double       tau,
+                             const std::string &reason,
+                             const std::string &solver_report,
+                             const double       factor)
   {
     model.restore_last_state();
     if (!solver_report.empty())
@@ -221,12 +233,14 @@ namespace FluidSurface
       advice = "the energy rose faster than 'time stepping/energy tolerance' allows at every τ tried; try a finer "
                "'geometry/refinement' or a smaller 'time stepping/maximum time step' (doc/scheme.md, \"The "
                "residual energy rise\"); ";
-    time.reject(reason, advice + "the output up to the last accepted step, the summary and the last checkpoint "
-                                 "are intact");
+    time.reject(reason,
+                advice + "the output up to the last accepted step, the summary and the last checkpoint are intact",
+                factor);
   }
 
   void
   FullModelScene::accept_step(const double                          tau,
+                              const double                          error_estimate,
                               const Energies                       &candidate,
                               const EnergyStepController::Decision &energy)
   {
@@ -236,7 +250,7 @@ namespace FluidSurface
     if (energy.step_size)
       time.set_step_size(*energy.step_size);
     model.accept();
-    time.accept(tau);
+    time.accept(tau, error_estimate);
     willmore = candidate.willmore;
   }
 
@@ -373,11 +387,9 @@ namespace FluidSurface
     statistics.add_value("linear iterations", step.linear_iterations);
     statistics.add_value("factorized", step.factorized ? 1 : 0);
     statistics.add_value("rigid multiplier", step.rigid_force);
-    if (model.iterates_geometry())
-      {
-        statistics.add_value("geometry iterations", step.geometry_iterations);
-        statistics.add_value("geometry change", step.geometry_change);
-      }
+    // Written with the lagged step too (zeros), so that a run can be resumed with the other setting.
+    statistics.add_value("geometry iterations", step.geometry_iterations);
+    statistics.add_value("geometry change", step.geometry_change);
     if (model.reparametrization_enabled())
       {
         statistics.add_value("reparametrizations", reparametrizations);

@@ -65,6 +65,8 @@ namespace FluidSurface
       double       momentum_correction = 0; ///< ConservationProjection: |P₀ − P| + |L₀ − L| before it
       unsigned int geometry_iterations = 0; ///< re-assemblies on the step's own surface (GeometryIteration)
       double       geometry_change     = 0; ///< the last iterate's largest node move over h (0 without iteration)
+      /// The local error estimate of the step (see estimate_error()); negative when there is none (first step).
+      double       error_estimate      = -1;
     };
 
     /// What a re-parametrization (reparametrize()) did.
@@ -109,6 +111,12 @@ namespace FluidSurface
      */
     void
     set_prescribed_velocity(const dealii::Function<3> &velocity);
+    /// Whether advance() computes an error estimate (set by the scene when `time stepping/error tolerance` > 0).
+    void
+    set_error_estimation(const bool on)
+    {
+      estimating_error = on;
+    }
     /// Makes the last advance() the current state.
     void
     accept();
@@ -322,6 +330,15 @@ namespace FluidSurface
                         const double              area_rate,
                         const RigidMotion        &carried,
                         LocalSystem              &local) const;
+    /**
+     * The local error estimate of a step of size @p tau whose solution (in the frame of the step) is @p new_state:
+     * the normal speeds of the nodes relative to the carry, w = (Ỹ − X^m)·ñ^m/τ (@p old_normal: ñ^m), against
+     * those of the last step (w^m, of size τ_p): e = τ²/(τ + τ_p) max|w − w^m| / R, R = √(A/4π), Backward Euler's
+     * (τ²/2)|ẅ| of the shape's position over its size. The tangential motion (the mesh law) and the rigid motion
+     * (the carry, exact) do not enter. Stores w for accept(); −1 without a last step.
+     */
+    double
+    estimate_error(const VectorType &new_state, const VectorType &old_normal, const double tau);
     /// The largest distance between the new positions Y of @p a and @p b (flow numbering) over the nodes.
     double
     largest_node_move(const VectorType &a, const VectorType &b) const;
@@ -403,6 +420,17 @@ namespace FluidSurface
     std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>> position_pairs;
     double                                 last_tau = 0;     ///< τ of the step that produced X^m
     double                                 last_step_tau = 0; ///< τ of the last advance()
+    /// Whether advance() estimates its error (estimate_error()).
+    bool                                   estimating_error = false;
+    /// The normal speeds w of the nodes in the last accepted step and in the candidate step (estimate_error(); in
+    /// the first component of the Y DoFs of each node).
+    VectorType                             normal_speed, candidate_normal_speed;
+    /// τ_p of the step that produced `normal_speed`; 0: none (the first step, after a re-parametrization).
+    double                                 normal_speed_step = 0;
+    /// R = √(A^m/4π) of the last advance(): the length scale of the error estimate.
+    double                                 shape_radius = 1;
+    /// The geometry DoFs of the components of each node of new_position_nodes.
+    std::vector<std::array<dealii::types::global_dof_index, 3>> new_position_geometry_dofs;
     double                                 target_volume = 0; ///< V₀
     double                                 target_area   = 0; ///< A₀
 
