@@ -258,6 +258,7 @@ namespace FluidSurface
   {
     state.position = geometry.position();
     state.solution = step.candidate();
+    step.accept_error_history();
   }
 
   void
@@ -273,9 +274,13 @@ namespace FluidSurface
   SurfaceReparametrization::Result
   FluidDeformableSurface::reparametrize()
   {
-    return reparametrization.reparametrize(step, state, run_request, [&]() {
-      return total_energy(kinetic_energy(state.solution), geometry.compute_curvature());
-    });
+    const SurfaceReparametrization::Result result =
+      reparametrization.reparametrize(step, state, run_request, [&]() {
+        return total_energy(kinetic_energy(state.solution), geometry.compute_curvature());
+      });
+    if (result.done)
+      step.forget_error_history(); // the transferred state has no history
+    return result;
   }
 
   double
@@ -308,6 +313,7 @@ namespace FluidSurface
     // The seeded random fields are drawn in setup() only; the seed is kept for the record.
     data.set("model/random seed", random_seed);
     reparametrization.save(data);
+    step.save_error_history(data);
   }
 
   void
@@ -322,6 +328,7 @@ namespace FluidSurface
     set_reference_position();
     step.set_n_factorizations(data.get_unsigned("model/factorizations"));
     reparametrization.load(data);
+    step.load_error_history(data);
     geometry.compute_curvature();
   }
 } // namespace FluidSurface

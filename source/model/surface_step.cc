@@ -8,12 +8,16 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <fluid_surface/flow/energy_functionals.h>
+#include <fluid_surface/io/checkpoint.h>
 #include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/io/run_stopped.h>
 #include <fluid_surface/model/nodal_point_values.h>
 #include <fluid_surface/model/surface_step.h>
 
 #include <cmath>
+#include <iomanip>
+#include <map>
+#include <sstream>
 
 namespace FluidSurface
 {
@@ -35,6 +39,7 @@ namespace FluidSurface
     VolumeConstraint::declare_parameters(prm);
     MeshRedistribution::declare_parameters(prm);
     ConservationProjection::declare_parameters(prm);
+    GeometryIteration::declare_parameters(prm);
   }
 
   void
@@ -45,6 +50,7 @@ namespace FluidSurface
     volume_constraint.parse_parameters(prm, maximum_time_step);
     redistribution.parse_parameters(prm);
     conservation.parse_parameters(prm);
+    geometry_iteration.parse_parameters(prm);
     momentum_constraints = MomentumConstraints(flow);
     // The linear solver of the step (entries shared with scene fixed surface).
     linear_solver.parse_parameters(prm);
@@ -156,6 +162,115 @@ namespace FluidSurface
                 }
             }
         }
+    // The geometry DoFs of the owned nodes of Y (the error estimate reads X^m and ñ^m there).
+    std::map<types::global_dof_index, types::global_dof_index> geometry_dof;
+    for (const auto &pair : position_pairs)
+      geometry_dof[pair.first] = pair.second;
+    new_position_geometry_dofs.clear();
+    for (const auto &node : new_position_nodes)
+      {
+        std::array<types::global_dof_index, 3> geo;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            const auto found = geometry_dof.find(node[d]);
+            AssertThrow(found != geometry_dof.end(), ExcMessage("a node of Y without its position DoF"));
+            geo[d] = found->second;
+          }
+        new_position_geometry_dofs.push_back(geo);
+      }
+  }
+
+  double
+  SurfaceStep::largest_node_move(const VectorType &a, const VectorType &b) const
+  {
+    double largest = 0;
+    for (const auto &node : new_position_nodes)
+      {
+        double square = 0;
+        for (unsigned int d = 0; d < 3; ++d)
+          square += (a[node[d]] - b[node[d]]) * (a[node[d]] - b[node[d]]);
+        largest = std::max(largest, square);
+      }
+    return std::sqrt(Utilities::MPI::max(largest, geometry.get_communicator()));
+  }
+
+  double
+  SurfaceStep::estimate_error(const VectorType &new_state, const VectorType &old_normal, const double tau)
+  {
+    if (candidate_normal_speed.size() != current.size())
+      candidate_normal_speed.reinit(owned, geometry.get_communicator());
+    double largest_difference = 0;
+    for (unsigned int n = 0; n < new_position_nodes.size(); ++n)
+      {
+        const auto  &node = new_position_nodes[n];
+        Tensor<1, 3> move, normal;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            move[d]   = new_state[node[d]] - state.position[new_position_geometry_dofs[n][d]];
+            normal[d] = old_normal[new_position_geometry_dofs[n][d]];
+          }
+        const double w = move * normal / tau;
+        candidate_normal_speed[node[0]] = w;
+        if (normal_speed_step > 0)
+          largest_difference = std::max(largest_difference, std::abs(w - normal_speed[node[0]]));
+      }
+    candidate_normal_speed.compress(VectorOperation::insert);
+    largest_difference = Utilities::MPI::max(largest_difference, geometry.get_communicator());
+    if (normal_speed_step == 0)
+      return -1;
+    return tau * tau / (tau + normal_speed_step) * largest_difference / shape_radius;
+  }
+
+  void
+  SurfaceStep::accept_error_history()
+  {
+    if (!estimating_error)
+      return;
+    normal_speed.reinit(owned, relevant, geometry.get_communicator());
+    normal_speed      = candidate_normal_speed;
+    normal_speed_step = last_tau;
+  }
+
+  void
+  SurfaceStep::save_error_history(CheckpointData &data) const
+  {
+    if (estimating_error && normal_speed_step > 0)
+      {
+        data.set("model/normal speed step", normal_speed_step);
+        data.set_fields("normal speed", dofs, {&normal_speed});
+      }
+  }
+
+  void
+  SurfaceStep::load_error_history(const CheckpointData &data)
+  {
+    normal_speed_step = 0;
+    if (estimating_error && data.has("model/normal speed step"))
+      {
+        VectorType w;
+        data.get_fields("normal speed", dofs, {&w});
+        normal_speed.reinit(owned, relevant, geometry.get_communicator());
+        normal_speed      = w;
+        normal_speed_step = data.get_double("model/normal speed step");
+      }
+  }
+
+  void
+  SurfaceStep::restore_old_geometry()
+  {
+    VectorType position(geometry.locally_owned_dofs(), geometry.get_communicator());
+    position = state.position;
+    geometry.set_position(position);
+  }
+
+  double
+  SurfaceStep::position_dot(const VectorType &a, const VectorType &b) const
+  {
+    double sum = 0;
+    for (const auto &node : new_position_nodes)
+      for (unsigned int d = 0; d < 3; ++d)
+        sum += a[node[d]] * b[node[d]];
+    return Utilities::MPI::sum(sum, geometry.get_communicator());
   }
 
   void
@@ -251,6 +366,8 @@ namespace FluidSurface
       , old_velocity(gauss.size())
       , old_velocity_gradient(gauss.size())
       , nodal_smooth_normal(nodal.size())
+      , old_position(gauss.size())
+      , nodal_old_position(nodal.size())
       , reference_gradient(gauss.size())
     {}
     AssemblyScratch(const AssemblyScratch &other)
@@ -269,6 +386,8 @@ namespace FluidSurface
     std::vector<Tensor<1, 3>> old_velocity;           ///< u^m
     std::vector<Tensor<2, 3>> old_velocity_gradient;  ///< G^m
     std::vector<Tensor<1, 3>> nodal_smooth_normal;    ///< ñ^m at the nodal points
+    std::vector<Tensor<1, 3>> old_position;           ///< X^m at the Gauss points
+    std::vector<Tensor<1, 3>> nodal_old_position;     ///< X^m at the nodal points
     // Law reference: ∇_{S^m}X₀ at the Gauss points, ñ^m by node, the rows of Y before their projection.
     std::vector<Tensor<2, 3>> reference_gradient;
     std::vector<Tensor<1, 3>> node_normals;
@@ -277,7 +396,7 @@ namespace FluidSurface
   };
 
   void
-  SurfaceStep::assemble(const double tau, const RigidMotion &motion)
+  SurfaceStep::assemble(const double tau, const RigidMotion &motion, const SurfaceGeometry::Measures &old_measures)
   {
     system_matrix = 0;
     system_rhs    = 0;
@@ -291,7 +410,7 @@ namespace FluidSurface
     const SurfaceGeometry::Measures m = geometry.measure();
     // div_P u = s with s = −(A^m − A₀)/(τ_c A^m) returns any area drift (∫div_P u = dA/dt);
     // τ_c = max(τ, τ_drift) keeps the correction bounded when a rejected step shrinks τ.
-    const double area_rate = -(m.area - state.target_area) / (drift_time(tau) * m.area);
+    const double area_rate = -(old_measures.area - state.target_area) / (drift_time(tau) * old_measures.area);
     // The mesh moves along with the rigid motion R of the shape (fit of u^m·ν): law bgn relaxes towards
     // X^m + τR, law reference carries the nodes by the rotation itself.
     const bool        carry   = redistribution.follow_rigid_motion &&
@@ -368,10 +487,12 @@ namespace FluidSurface
     // Gauss points: the flow terms, the bending force and scalar, (∇_S Y, ∇_S η), the global columns.
     scratch.flow.reinit(cell);
     scratch.geometry.reinit(geometry_cell);
-    scratch.geometry[vector].get_function_values(geometry.normal_field(), scratch.smooth_normal);
-    scratch.geometry[vector].get_function_gradients(geometry.normal_field(), scratch.smooth_normal_gradient);
+    const VectorType &normal = assembly_normal != nullptr ? *assembly_normal : geometry.normal_field();
+    scratch.geometry[vector].get_function_values(normal, scratch.smooth_normal);
+    scratch.geometry[vector].get_function_gradients(normal, scratch.smooth_normal_gradient);
     scratch.flow[vector].get_function_values(state.solution, scratch.old_velocity);
     scratch.flow[vector].get_function_gradients(state.solution, scratch.old_velocity_gradient);
+    scratch.geometry[vector].get_function_values(*old_position, scratch.old_position);
     if (reference_law)
       scratch.flow[FEValuesExtractors::Vector(DofLayout::new_position_component)].get_function_gradients(
         state.reference_position, scratch.reference_gradient);
@@ -384,7 +505,7 @@ namespace FluidSurface
                      scratch.smooth_normal_gradient[q],
                      scratch.old_velocity[q],
                      scratch.old_velocity_gradient[q]);
-        assemble_flow_terms(point, tau, area_rate, carried, local);
+        assemble_flow_terms(point, Point<3>(scratch.old_position[q]), tau, area_rate, carried, local);
         if (request.prescribed_velocity() == nullptr)
           bending.assemble_force(point, *layout, local.matrix);
         bending.assemble_bending_scalar(point, *layout, local.matrix);
@@ -416,12 +537,13 @@ namespace FluidSurface
     // Nodal points: the kinematics (κ rows) and the nodal terms of the redistribution (Y rows).
     scratch.flow_nodal.reinit(cell);
     scratch.geometry_nodal.reinit(geometry_cell);
-    scratch.geometry_nodal[vector].get_function_values(geometry.normal_field(), scratch.nodal_smooth_normal);
+    scratch.geometry_nodal[vector].get_function_values(normal, scratch.nodal_smooth_normal);
+    scratch.geometry_nodal[vector].get_function_values(*old_position, scratch.nodal_old_position);
     NodalPointValues &nodal = scratch.nodal_point;
     for (unsigned int q = 0; q < scratch.flow_nodal.n_quadrature_points; ++q)
       {
         nodal.reinit(scratch.flow_nodal, q, scratch.nodal_smooth_normal[q]);
-        const Point<3> &x = nodal.position;
+        const Point<3> x(scratch.nodal_old_position[q]); // X^m (the mapped point unless the geometry is iterated)
         if (reference_law)
           {
             // In the carried frame: Ỹ·ñ = X^m·ñ + τ(ũ − R)·ñ, damped towards X^m.
@@ -452,6 +574,7 @@ namespace FluidSurface
 
   void
   SurfaceStep::assemble_flow_terms(const SurfacePointValues &point,
+                                   const Point<3>           &old_point,
                                    const double              tau,
                                    const double              area_rate,
                                    const RigidMotion        &carried,
@@ -486,7 +609,7 @@ namespace FluidSurface
     // position relative to the carry; advance() maps back): the frame's rotation adds (Ω × ũ, v), and the mesh
     // velocity in the convection is R + (Ỹ − X^m)/τ, i.e. W = X^m − τR.
     const bool     carried_frame = request.law == MeshRedistribution::Law::reference;
-    const Point<3> start         = carried_frame ? p.position - tau * carried.value(p.position) : p.position;
+    const Point<3> start         = carried_frame ? old_point - tau * carried.value(old_point) : old_point;
     for (const unsigned int i : layout->velocity)
       {
         if (flow.inertia)
@@ -536,6 +659,8 @@ namespace FluidSurface
   {
     request = step_request;
     Result result;
+    // X^m: the accepted state's surface; the valve's solves move the geometry itself between them.
+    old_position = request.velocity == StepRequest::Velocity::flow ? &state.position : &geometry.position();
     // The momenta of u^m and the rigid motion of the shape, once per step (the mesh damping target and the
     // constant parts of the momentum constraints).
     const bool need_motion =
@@ -546,9 +671,12 @@ namespace FluidSurface
     // Law reference solves the step in the frame carried by the rigid motion of the shape (assemble_cell()).
     const bool carried_frame = request.law == MeshRedistribution::Law::reference &&
                                redistribution.follow_rigid_motion;
+    const SurfaceGeometry::Measures old_measures = geometry.measure();
+    shape_radius                                 = std::sqrt(old_measures.area / (4 * numbers::PI));
+    const VectorType                old_normal(geometry.normal_field()); // ñ^m (the geometry may be iterated)
     {
       TimerSection section(step_timer, "assembly");
-      assemble(tau, motion);
+      assemble(tau, motion, old_measures);
     }
 
     // Bordering: the global constraints c_k·x = g_k with multipliers μ_k (force μ_k c_k in the
@@ -563,8 +691,10 @@ namespace FluidSurface
       {
         columns.push_back(&volume_column);
         rows.push_back(&volume_column);
-        rates.push_back(-(geometry.measure().volume - state.target_volume) / drift_time(tau));
+        rates.push_back(-(old_measures.volume - state.target_volume) / drift_time(tau));
       }
+    // The momentum targets in the frame of the step (the constant parts of the rows are added by set_rates()).
+    std::array<double, 6> targets = {{0, 0, 0, 0, 0, 0}};
     if (rigid_rows_on)
       {
         // The constant parts of the linearized momenta on S^{m+1} (see assemble()) move to the right:
@@ -574,7 +704,6 @@ namespace FluidSurface
         const std::array<double, 6> old_momenta =
           flow.inertia ? motion.momenta : std::array<double, 6>{{0, 0, 0, 0, 0, 0}};
         const double fraction = flow.inertia ? std::min(1.0, tau / drift_time(tau)) : 1.0;
-        std::array<double, 6> targets;
         for (unsigned int k = 0; k < 6; ++k)
           targets[k] = old_momenta[k] + fraction * (state.rigid_targets[k] - old_momenta[k]);
         if (carried_frame)
@@ -599,54 +728,134 @@ namespace FluidSurface
           {
             columns.push_back(&rigid_columns[k]);
             rows.push_back(&rigid_rows[k]);
-            rates.push_back(targets[k] + (k < 3 ? 2.0 : 3.0) * old_momenta[k]);
           }
       }
+    const unsigned int first_rigid = volume_row ? 1 : 0;
+    // The rows are linearized about the surface they were assembled on: their constant parts are the momenta
+    // of u^m there (@p assembly_momenta).
+    const auto set_rates = [&](const std::array<double, 6> &assembly_momenta) {
+      rates.resize(first_rigid);
+      if (rigid_rows_on)
+        for (unsigned int k = 0; k < 6; ++k)
+          rates.push_back(targets[k] + (k < 3 ? 2.0 : 3.0) * (flow.inertia ? assembly_momenta[k] : 0.0));
+    };
+    set_rates(motion.momenta);
 
     AssertDimension(columns.size(), (volume_row ? 1 : 0) + (rigid_rows_on ? 6 : 0));
     AssertDimension(rates.size(), columns.size());
     const BorderedSystem system(system_matrix, columns, rows);
     BorderedSystem::BlockVector solution = system.make_vector(system_rhs), rhs = solution;
-    rhs.block(0) = system_rhs;
-    BorderedSystem::set_multipliers(rhs, rates);
-    try
+    if (last_solution.n_blocks() == 2 && last_solution.block(1).size() == columns.size())
+      solution = last_solution;
+    const auto solve = [&]() {
+      rhs.block(0) = system_rhs;
+      BorderedSystem::set_multipliers(rhs, rates);
+      try
+        {
+          const ReusedFactorizationSolver::Result solve = solve_system(system, solution, rhs);
+          result.linear_iterations += solve.iterations;
+          result.factorized = result.factorized || solve.factorized;
+          last_solution     = solution;
+          const std::vector<double> mu = BorderedSystem::multipliers(solution);
+          if (volume_row)
+            result.gamma = mu[0];
+          double rigid = 0;
+          for (unsigned int k = first_rigid; k < mu.size(); ++k)
+            rigid += mu[k] * mu[k];
+          result.rigid_force = std::sqrt(rigid);
+        }
+      catch (const LinearSolverError &exc)
+        {
+          linear_solver.request_factorization();
+          result.failure         = std::string("linear solver failed: ") + exc.what();
+          result.failure_details = exc.details();
+          return false;
+        }
+      catch (const std::exception &exc)
+        {
+          linear_solver.request_factorization();
+          result.failure         = "linear solver failed: " + one_line_message(exc, 200);
+          result.failure_details = exc.what();
+          return false;
+        }
+      if (!std::isfinite(solution.block(0).l2_norm()))
+        {
+          result.failure = "the solution is not finite";
+          return false;
+        }
+      constraints.distribute(solution.block(0));
+      return true;
+    };
+    if (!solve())
+      return result;
+
+    // The implicit geometry: the same step assembled again on the surface of its own solution (in the frame of
+    // the step, before the carry), until the nodes stop moving.
+    if (geometry_iteration.enabled() && request.prescribed_velocity() == nullptr && request.global_constraints)
       {
-        if (last_solution.n_blocks() == 2 && last_solution.block(1).size() == columns.size())
-          solution = last_solution;
-        const ReusedFactorizationSolver::Result solve = solve_system(system, solution, rhs);
-        result.linear_iterations                      = solve.iterations;
-        result.factorized                             = solve.factorized;
-        last_solution                                 = solution;
-        const std::vector<double> mu          = BorderedSystem::multipliers(solution);
-        const unsigned int        first_rigid = volume_row ? 1 : 0;
-        if (volume_row)
-          result.gamma = mu[0];
-        double rigid = 0;
-        for (unsigned int k = first_rigid; k < mu.size(); ++k)
-          rigid += mu[k] * mu[k];
-        result.rigid_force = std::sqrt(rigid);
-      }
-    catch (const LinearSolverError &exc)
-      {
-        linear_solver.request_factorization();
-        result.failure         = std::string("linear solver failed: ") + exc.what();
-        result.failure_details = exc.details();
-        return result;
-      }
-    catch (const std::exception &exc)
-      {
-        linear_solver.request_factorization();
-        result.failure         = "linear solver failed: " + one_line_message(exc, 200);
-        result.failure_details = exc.what();
-        return result;
+        const double node_spacing =
+          std::sqrt(old_measures.area / geometry.triangulation().n_global_active_cells()) / geometry.degree();
+        using Implicit            = GeometryIteration::Implicit;
+        const Implicit   implicit = geometry_iteration.implicit;
+        VectorType       iterate_normal;
+        bool             converged = false;
+        // The surface Ỹ_k the step is assembled on, its residual r_k = G(Ỹ_k) − Ỹ_k (G: the solve's new position)
+        // and the relaxation ω_k of Ỹ_{k+1} = Ỹ_k + ω_k r_k (Aitken: from r_k and r_{k−1}; 1: plain fixed point).
+        VectorType surface = solution.block(0), residual, last_residual;
+        double     omega   = 1;
+        for (unsigned int k = 1; k <= geometry_iteration.max_iterations && !converged; ++k)
+          {
+            candidate_solution = surface;
+            copy_new_position_to_geometry(candidate_solution);
+            {
+              TimerSection section(step_timer, "assembly");
+              geometry.compute_curvature();
+              if (implicit == Implicit::normal)
+                {
+                  iterate_normal = geometry.normal_field();
+                  assembly_normal = &iterate_normal;
+                  restore_old_geometry();
+                }
+              else if (implicit == Implicit::metric)
+                assembly_normal = &old_normal;
+              assemble(tau, motion, old_measures);
+              assembly_normal = nullptr;
+              if (rigid_rows_on && flow.inertia && implicit != Implicit::normal)
+                set_rates(rigid_motion(state.solution).momenta);
+            }
+            if (!solve())
+              return result;
+            result.geometry_iterations = k;
+            result.geometry_change     = largest_node_move(solution.block(0), surface) / node_spacing;
+            converged                  = result.geometry_change <= geometry_iteration.tolerance;
+            if (converged)
+              break;
+            residual = solution.block(0);
+            residual -= surface;
+            if (geometry_iteration.aitken && k > 1)
+              {
+                VectorType difference = residual;
+                difference -= last_residual;
+                const double denominator = position_dot(difference, difference);
+                if (denominator > 0)
+                  omega = std::min(2.0, std::max(0.1, -omega * position_dot(last_residual, difference) / denominator));
+              }
+            surface.add(omega, residual);
+            last_residual = residual;
+          }
+        if (!converged)
+          {
+            std::ostringstream why;
+            why << "the geometry iteration did not converge: after " << geometry_iteration.max_iterations
+                << " re-assemblies the nodes still moved by " << std::setprecision(3) << result.geometry_change
+                << " h (tolerance 'geometry iteration/tolerance' = " << geometry_iteration.tolerance << ")";
+            result.failure = why.str();
+            return result;
+          }
       }
     VectorType &x1 = solution.block(0);
-    if (!std::isfinite(x1.l2_norm()))
-      {
-        result.failure = "the solution is not finite";
-        return result;
-      }
-    constraints.distribute(x1);
+    if (estimating_error && request.velocity == StepRequest::Velocity::flow)
+      result.error_estimate = estimate_error(x1, old_normal, tau);
     candidate_solution = x1;
     {
       TimerSection section(step_timer, "diagnostics");
@@ -669,6 +878,7 @@ namespace FluidSurface
           result.momentum_correction = conservation.project_momenta(geometry, dofs, state.rigid_targets, projected);
         candidate_solution = projected;
       }
+    last_tau = tau;
     result.solved = true;
     return result;
   }

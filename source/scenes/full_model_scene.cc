@@ -35,6 +35,7 @@ namespace FluidSurface
     time.parse_parameters(prm);
     energy_control = EnergyStepController(time.energy_tolerance());
     model.parse_parameters(prm, time.maximum_step_size());
+    model.set_error_estimation(time.error_control());
     diagnostics.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
     steady_state.parse_parameters(prm);
@@ -95,6 +96,14 @@ namespace FluidSurface
                 retry_step(tau, step.failure, step.failure_details);
                 continue;
               }
+            if (time.error_control() && step.error_estimate > time.error_bound())
+              {
+                std::ostringstream reason;
+                reason << "local error estimate " << std::setprecision(3) << step.error_estimate
+                       << " above 'error tolerance' " << time.error_bound();
+                retry_step(tau, reason.str(), "", std::max(0.2, time.error_step_factor(step.error_estimate)));
+                continue;
+              }
             const Energies                       candidate = candidate_energies();
             const EnergyStepController::Decision energy =
               energy_control.decide(total_energy, candidate.total, tau);
@@ -103,7 +112,7 @@ namespace FluidSurface
                 retry_step(tau, energy.reason, "");
                 continue;
               }
-            accept_step(tau, candidate, energy);
+            accept_step(tau, step.error_estimate, candidate, energy);
             const SurfaceReparametrization::Jumps jumps = reparametrize_if_due();
             const Diagnostics::Values    values = record_step(tau, step, jumps);
             check_mesh_quality();
@@ -193,7 +202,10 @@ namespace FluidSurface
   }
 
   void
-  FullModelScene::retry_step(const double tau, const std::string &reason, const std::string &solver_report)
+  FullModelScene::retry_step(const double       tau,
+                             const std::string &reason,
+                             const std::string &solver_report,
+                             const double       factor)
   {
     model.restore_last_state();
     if (!solver_report.empty())
@@ -209,6 +221,10 @@ namespace FluidSurface
       advice = "the linear solver failed (its report is in " + output.directory() + "error.log); try a smaller "
                "'time stepping/maximum time step', 'linear solver/reuse factorization = false' or another "
                "'linear solver/direct solver'; ";
+    else if (reason.rfind("the geometry iteration did not converge", 0) == 0)
+      advice = "the step's geometry iteration did not contract at every τ tried; try a larger 'geometry "
+               "iteration/maximum iterations' or 'geometry iteration/tolerance', or 'maximum iterations = 0' (the "
+               "lagged step); ";
     else if (reason.rfind("the solution is not finite", 0) == 0)
       advice = "the step's solution was not finite; try a smaller 'time stepping/maximum time step' or a finer "
                "'geometry/refinement', and check that the physical parameters are of order 1; ";
@@ -216,12 +232,14 @@ namespace FluidSurface
       advice = "the energy rose faster than 'time stepping/energy tolerance' allows at every τ tried; try a finer "
                "'geometry/refinement' or a smaller 'time stepping/maximum time step' (doc/scheme.md, \"The "
                "residual energy rise\"); ";
-    time.reject(reason, advice + "the output up to the last accepted step, the summary and the last checkpoint "
-                                 "are intact");
+    time.reject(reason,
+                advice + "the output up to the last accepted step, the summary and the last checkpoint are intact",
+                factor);
   }
 
   void
   FullModelScene::accept_step(const double                          tau,
+                              const double                          error_estimate,
                               const Energies                       &candidate,
                               const EnergyStepController::Decision &energy)
   {
@@ -231,7 +249,7 @@ namespace FluidSurface
     if (energy.step_size)
       time.set_step_size(*energy.step_size);
     model.accept();
-    time.accept(tau);
+    time.accept(tau, error_estimate);
     willmore = candidate.willmore;
   }
 
@@ -351,6 +369,9 @@ namespace FluidSurface
     statistics.add_value("linear iterations", step.linear_iterations);
     statistics.add_value("factorized", step.factorized ? 1 : 0);
     statistics.add_value("rigid multiplier", step.rigid_force);
+    // Written with the lagged step too (zeros), so that a run can be resumed with the other setting.
+    statistics.add_value("geometry iterations", step.geometry_iterations);
+    statistics.add_value("geometry change", step.geometry_change);
     model.safety_valve().add_to_statistics(statistics, jumps);
     statistics.add_value("wall time", elapsed_wall_time());
     statistics.end_row();
@@ -373,6 +394,9 @@ namespace FluidSurface
           pcout << std::setprecision(3) << std::scientific << "    E(L2) = " << v.l2_distance << " (axial "
                 << v.l2_distance_axial << ", equatorial " << v.l2_distance_equatorial << ")" << std::defaultfloat
                 << '\n';
+        if (model.iterates_geometry())
+          pcout << "    geometry iterations " << step.geometry_iterations << ", last node move " << std::setprecision(2)
+                << std::scientific << step.geometry_change << " h" << std::defaultfloat << '\n';
         if (output.report_wall_time())
           pcout << "    " << std::setprecision(3) << per_step << " s/step, ETA " << static_cast<long>(eta) << " s\n";
         pcout << std::flush;

@@ -32,7 +32,11 @@ namespace FluidSurface
                       "1e-2",
                       RealRange::at_least(1e-12),
                       "Initial time step τ₀ ≥ 1e-12 (with adaptive = true: τ_min ≤ τ₀ ≤ τ_max).");
-    prm.declare_entry("adaptive", "true", Patterns::Bool(), "Adapt τ: shrink on rejected steps, grow on easy ones.");
+    prm.declare_entry("adaptive",
+                      "true",
+                      Patterns::Bool(),
+                      "Adapt τ: shrink on rejected steps, grow on easy ones. false: every step is 'time step' (also "
+                      "after a resume) and a rejected step stops the run.");
     prm.declare_entry("minimum time step",
                       "1e-7",
                       RealRange::at_least(1e-12),
@@ -53,6 +57,15 @@ namespace FluidSurface
                       "5",
                       Patterns::Integer(1),
                       "Number N ≥ 1 of consecutive accepted steps before τ grows.");
+    prm.declare_entry("error tolerance",
+                      "0",
+                      RealRange::closed(0, 1),
+                      "ε_t, 0 ≤ ε_t ≤ 1: with ε_t > 0, τ follows a local error estimate e of the step (the velocity "
+                      "at the nodes against its extrapolation from the two steps before, relative to max |u| and to 1; "
+                      "doc/scheme.md): a step with e > ε_t is rejected and retried with τ·max(0.2, 0.9 (ε_t/e)^½), an "
+                      "accepted one proposes τ·min(2, 0.9 (ε_t/e)^½) for the next, within [τ_min, τ_max]; 'growth "
+                      "factor' and 'easy steps before growth' are then not used. The energy check stays on as a guard. "
+                      "0: the step grows by 'growth factor' after easy steps.");
     prm.declare_entry("energy tolerance",
                       "1e-3",
                       RealRange::at_least(0),
@@ -75,6 +88,11 @@ namespace FluidSurface
     shrink                    = prm.get_double("shrink factor");
     easy_steps                = prm.get_integer("easy steps before growth");
     relative_energy_tolerance = prm.get_double("energy tolerance");
+    error_tolerance           = prm.get_double("error tolerance");
+    if (error_tolerance > 0 && !adaptive)
+      throw_invalid_entry("time stepping/error tolerance",
+                          prm.get("error tolerance"),
+                          "0 with adaptive = false (a fixed step has nothing to adapt)");
     if (end_time > 0 && end_time < tau_min)
       throw_invalid_entry("time stepping/end time",
                           prm.get("end time"),
@@ -104,13 +122,28 @@ namespace FluidSurface
     return (remaining < 1.5 * tau) ? (remaining > tau ? 0.5 * remaining : remaining) : tau;
   }
 
+  double
+  TimeStepper::error_step_factor(const double error) const
+  {
+    // Backward Euler's local error is O(τ²).
+    if (!(error > 0))
+      return 2.0;
+    return 0.9 * std::sqrt(error_tolerance / error);
+  }
+
   void
-  TimeStepper::accept(const double tau_used)
+  TimeStepper::accept(const double tau_used, const double error)
   {
     current_time += tau_used;
     if (end_time - current_time < 1e-12 * std::max(1.0, end_time))
       current_time = end_time;
     ++n_accepted;
+    if (error_control() && error >= 0)
+      {
+        // τ_used may be a shortened last step: the proposal grows from the larger of the two.
+        set_step_size(std::max(tau, tau_used) * std::min(2.0, error_step_factor(error)));
+        return;
+      }
     if (adaptive && ++n_easy >= easy_steps)
       {
         tau    = std::min(tau * growth, tau_max);
@@ -119,10 +152,11 @@ namespace FluidSurface
   }
 
   void
-  TimeStepper::reject(const std::string &reason, const std::string &advice)
+  TimeStepper::reject(const std::string &reason, const std::string &advice, const double factor)
   {
     ++n_rejected;
     n_easy = 0;
+    const double shrink = factor > 0 ? std::min(factor, this->shrink) : this->shrink;
     if (!adaptive || tau * shrink < tau_min)
       {
         std::ostringstream msg;
@@ -146,8 +180,9 @@ namespace FluidSurface
   void
   TimeStepper::load(const CheckpointData &data)
   {
+    // With adaptive = false the step is the entry 'time step' of this run, whatever the checkpoint's was.
     set_state({data.get_double("time stepping/time"),
-               data.get_double("time stepping/tau"),
+               adaptive ? data.get_double("time stepping/tau") : tau,
                data.get_unsigned("time stepping/steps"),
                data.get_unsigned("time stepping/rejected steps"),
                data.get_unsigned("time stepping/easy steps")});

@@ -127,6 +127,18 @@ namespace FluidSurface
     {
       return step.bending.Be;
     }
+    /// Whether the step iterates its geometry (`geometry iteration/maximum iterations` > 0).
+    bool
+    iterates_geometry() const
+    {
+      return step.geometry_iteration.enabled();
+    }
+    /// Whether the steps estimate their local error (set by the scene for `time stepping/error tolerance` > 0).
+    void
+    set_error_estimation(const bool on)
+    {
+      step.set_error_estimation(on);
+    }
     /// Whether ∂_t u is assembled (false: the Stokes limit, whose energy F is the bending energy alone).
     bool
     has_inertia() const

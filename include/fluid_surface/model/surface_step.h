@@ -15,6 +15,7 @@
 #include <fluid_surface/model/bending_force.h>
 #include <fluid_surface/model/conservation_projection.h>
 #include <fluid_surface/model/dof_layout.h>
+#include <fluid_surface/model/geometry_iteration.h>
 #include <fluid_surface/model/local_system.h>
 #include <fluid_surface/model/mesh_redistribution.h>
 #include <fluid_surface/model/momentum_constraints.h>
@@ -32,6 +33,8 @@
 
 namespace FluidSurface
 {
+  class CheckpointData;
+
   /**
    * One step of the fluid deformable surface (seed eqs. 1–4, doc/scheme.md): the full 3D velocity u ∈ [Q2]³,
    * surface pressure p ∈ Q1, curvature κ and bending scalar y ∈ Q_k, the new position Y ∈ [Q_k]³ and the
@@ -60,6 +63,10 @@ namespace FluidSurface
       double       rigid_force       = 0; ///< Stokes limit: |λ| of the multipliers of ∫u = 0, ∫X×u = 0
       double       node_correction   = 0; ///< ConservationProjection: the largest normal move of a node
       double       momentum_correction = 0; ///< ConservationProjection: |P₀ − P| + |L₀ − L| before it
+      unsigned int geometry_iterations = 0; ///< re-assemblies on the step's own surface (GeometryIteration)
+      double       geometry_change     = 0; ///< the last iterate's largest node move over h (0 without iteration)
+      /// The local error estimate of the step (see estimate_error()); negative when there is none (first step).
+      double       error_estimate      = -1;
     };
 
     /// A step on @p geometry from the accepted @p state (both kept by reference).
@@ -155,6 +162,27 @@ namespace FluidSurface
     {
       linear_solver.set_n_factorizations(n);
     }
+    /// Whether advance() computes an error estimate of flow steps (`time stepping/error tolerance` > 0).
+    void
+    set_error_estimation(const bool on)
+    {
+      estimating_error = on;
+    }
+    /// The candidate's normal speeds become the history of the error estimate (the caller accepted the step).
+    void
+    accept_error_history();
+    /// The next step has no error estimate (the state jumped: a re-parametrization).
+    void
+    forget_error_history()
+    {
+      normal_speed_step = 0;
+    }
+    /// Writes the history of the error estimate into a checkpoint (nothing without one). Collective.
+    void
+    save_error_history(CheckpointData &data) const;
+    /// Reads it, if the checkpoint has one and the error is estimated.
+    void
+    load_error_history(const CheckpointData &data);
     /// Sections "assembly", "factorization", "linear solve", "diagnostics" of advance() go to @p timer.
     void
     set_timer(dealii::TimerOutput &timer)
@@ -170,6 +198,7 @@ namespace FluidSurface
     MeshRedistribution     redistribution;
     MomentumConstraints    momentum_constraints;
     ConservationProjection conservation;
+    GeometryIteration      geometry_iteration;
 
   private:
     /// The rigid motion of the shape of @p flow_vector (RigidMotion::fit() with the mesh law's cutoff).
@@ -178,12 +207,14 @@ namespace FluidSurface
     /// Per-thread FEValues and point values of assemble_cell().
     struct AssemblyScratch;
     /**
-     * Assembles the step system of size @p tau on S^m (WorkStream over the cells): matrix, right-hand side,
-     * volume column and, if active, the rigid-motion columns and rows. @p motion is the rigid motion of the
-     * shape (the target of the tangential damping) and the momenta of u^m.
+     * Assembles the step system of size @p tau on the geometry's surface (S^m, or an iterate S^{m+1,k} of
+     * GeometryIteration; WorkStream over the cells): matrix, right-hand side, volume column and, if active, the
+     * rigid-motion columns and rows. The old position X^m is *old_position (read at the quadrature and nodal
+     * points), u^m is the state's. @p motion is the rigid motion of the shape (the target of the tangential
+     * damping) and the momenta of u^m; @p old_measures those of S^m (the area drift).
      */
     void
-    assemble(const double tau, const RigidMotion &motion);
+    assemble(const double tau, const RigidMotion &motion, const SurfaceGeometry::Measures &old_measures);
     /// One cell of assemble(): the Gauss-point terms, then the nodal terms (·,·)_h.
     void
     assemble_cell(const typename dealii::DoFHandler<2, 3>::active_cell_iterator &cell,
@@ -194,7 +225,7 @@ namespace FluidSurface
                   AssemblyScratch                                               &scratch,
                   LocalSystem                                                   &local) const;
     /**
-     * The momentum and continuity rows at one Gauss point, the terms of SurfaceFluid:
+     * The momentum and continuity rows at one Gauss point (@p old_point: X^m there), the terms of SurfaceFluid:
      * (1/τ)(u − u^m, v) + (G u^m, v) − (1/τ)(G^m (Y − X^m), v) + (2/Re)(σ(u), σ(v)) − (p, div_P v) (in the
      * Stokes limit ε(u, v) instead of the inertia, no convection) and −(div_P u, q) = −(s, q), s = @p area_rate.
      * With law reference in the frame carried by the rigid motion @p carried: (1/τ)(u − Q u^m, v) + (Ω × u, v)
@@ -202,6 +233,7 @@ namespace FluidSurface
      */
     void
     assemble_flow_terms(const SurfacePointValues &point,
+                        const dealii::Point<3>   &old_point,
                         const double              tau,
                         const double              area_rate,
                         const RigidMotion        &carried,
@@ -216,6 +248,25 @@ namespace FluidSurface
      */
     ReusedFactorizationSolver::Result
     solve_system(const BorderedSystem &system, BorderedSystem::BlockVector &x, const BorderedSystem::BlockVector &b);
+    /**
+     * The local error estimate of a step of size @p tau whose solution (in the frame of the step) is @p new_state:
+     * the normal speeds of the nodes relative to the carry, w = (Ỹ − X^m)·ñ^m/τ (@p old_normal: ñ^m), against
+     * those of the last accepted step (w^m, of size τ_p): e = τ²/(τ + τ_p) max|w − w^m| / R, R = √(A/4π),
+     * backward Euler's (τ²/2)|ẅ| of the shape's position over its size. The tangential motion (the mesh law)
+     * and the rigid motion (the carry, exact) do not enter. Stores w for accept_error_history(); −1 without a
+     * last step.
+     */
+    double
+    estimate_error(const VectorType &new_state, const VectorType &old_normal, const double tau);
+    /// The dot product of the new positions Y of @p a and @p b (flow numbering) over the nodes.
+    double
+    position_dot(const VectorType &a, const VectorType &b) const;
+    /// The largest distance between the new positions Y of @p a and @p b (flow numbering) over the nodes.
+    double
+    largest_node_move(const VectorType &a, const VectorType &b) const;
+    /// The geometry's position back to X^m (its curvature and normal are not recomputed).
+    void
+    restore_old_geometry();
     /// Law reference: maps the solution of a step in the carried frame back (u = Qũ, Y = the carry of Ỹ).
     void
     leave_carried_frame(const RigidMotion &carried, const double tau, VectorType &solution) const;
@@ -251,6 +302,23 @@ namespace FluidSurface
     std::vector<std::array<dealii::types::global_dof_index, 3>> velocity_nodes, new_position_nodes;
     /// (flow DoF of Y_d, geometry DoF of X_d) for the locally owned nodes.
     std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>> position_pairs;
+    /// The geometry DoFs of the components of each node of new_position_nodes.
+    std::vector<std::array<dealii::types::global_dof_index, 3>> new_position_geometry_dofs;
+    /// X^m for the assembly: the state's position for flow steps, the geometry's own for the valve's solves.
+    const VectorType *old_position = nullptr;
+    /// The normal field ñ the assembly uses instead of the geometry's (GeometryIteration::Implicit), or none.
+    const VectorType *assembly_normal = nullptr;
+    /// τ of the last advance().
+    double last_tau = 0;
+    /// Whether advance() estimates the error of flow steps (estimate_error()).
+    bool estimating_error = false;
+    /// The normal speeds w of the nodes in the last accepted step and in the candidate step (estimate_error();
+    /// in the first component of the Y DoFs of each node).
+    VectorType normal_speed, candidate_normal_speed;
+    /// τ_p of the step that produced `normal_speed`; 0: none (the first step, after a re-parametrization).
+    double normal_speed_step = 0;
+    /// R = √(A^m/4π) of the last advance(): the length scale of the error estimate.
+    double shape_radius = 1;
 
     /// The step's LU factorization, kept across steps (`subsection linear solver`).
     ReusedFactorizationSolver linear_solver;

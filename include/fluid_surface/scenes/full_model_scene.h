@@ -69,13 +69,18 @@ namespace FluidSurface
     /**
      * Undoes the last step (of size @p tau, not solved or rejected for @p reason) and shrinks τ for its
      * retry; RunFailed when τ would fall below τ_min. A non-empty @p solver_report (the linear solver's own
-     * account of a failure) goes to error.log.
+     * account of a failure) goes to error.log. @p factor > 0: shrink τ by it (the error control's) when it is
+     * smaller than the shrink factor.
      */
     void
-    retry_step(const double tau, const std::string &reason, const std::string &solver_report);
-    /// Makes the solved step of size @p tau the current state; τ for the next step as the @p energy check says.
+    retry_step(const double tau, const std::string &reason, const std::string &solver_report, const double factor = 0);
+    /// Makes the solved step of size @p tau the current state; τ for the next step as the @p energy check says,
+    /// or, with error control, as its @p error_estimate says.
     void
-    accept_step(const double tau, const Energies &candidate, const EnergyStepController::Decision &energy);
+    accept_step(const double                          tau,
+                const double                          error_estimate,
+                const Energies                       &candidate,
+                const EnergyStepController::Decision &energy);
     /**
      * One statistics row and screen report of the accepted state (with the @p jumps of the re-parametrization
      * of this step, zero if none); returns its measures.

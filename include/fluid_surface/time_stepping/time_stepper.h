@@ -77,9 +77,28 @@ namespace FluidSurface
       return relative_energy_tolerance;
     }
 
-    /// Advances time by the τ just used; grows τ after enough easy steps.
+    /**
+     * Advances time by the τ just used. With error control (error_control()) and an @p error estimate e ≥ 0 of
+     * the step, the next τ is τ·min(2, 0.9 (ε_t/e)^½); otherwise τ grows by the growth factor after enough easy
+     * steps.
+     */
     void
-    accept(const double tau_used);
+    accept(const double tau_used, const double error = -1);
+    /// Whether τ follows a local error estimate (`error tolerance` ε_t > 0).
+    bool
+    error_control() const
+    {
+      return error_tolerance > 0;
+    }
+    /// ε_t of `error tolerance`.
+    double
+    error_bound() const
+    {
+      return error_tolerance;
+    }
+    /// The factor 0.9 (ε_t/e)^½ by which a step with the error estimate @p error changes τ (2 for e = 0).
+    double
+    error_step_factor(const double error) const;
 
     /// Sets τ for the next step (clipped to [τ_min, τ_max]).
     void
@@ -89,11 +108,11 @@ namespace FluidSurface
     }
 
     /**
-     * Shrinks τ after a rejected step. When τ would fall below τ_min (or adaptive is off) the run cannot go
+     * Shrinks τ after a rejected step, by the shrink factor, or by @p factor when it is positive and smaller. When τ would fall below τ_min (or adaptive is off) the run cannot go
      * on: throws RunFailed, whose reason names the step, t, τ and @p reason, followed by @p advice.
      */
     void
-    reject(const std::string &reason, const std::string &advice);
+    reject(const std::string &reason, const std::string &advice, const double factor = 0);
 
     /// The state a checkpoint needs to continue bit for bit.
     struct State
@@ -136,6 +155,7 @@ namespace FluidSurface
     double       shrink;
     unsigned int easy_steps;
     double       relative_energy_tolerance;
+    double       error_tolerance = 0; ///< ε_t; 0: no error control
     bool         adaptive;
 
     double       current_time = 0;

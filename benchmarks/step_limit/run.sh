@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# benchmarks/step_limit: the largest fixed τ at which the step stays stable inside the fast shape change (the
+# symmetry-breaking transformation) of the seed's prolate and oblate, for the lagged step and the step with
+# implicit geometry (subsection geometry iteration).
+#   benchmarks/step_limit/run.sh [--quick]        from the repository root, after building
+# 1. A start checkpoint per case inside the fastest part of its transformation: prm/prolate_long.prm to t = 20
+#    (refinement 3) or 18 (refinement 4), prm/oblate_long.prm to t = 4.75, at the case's refinement (kept in
+#    $WORK and reused).
+# 2. From it, a window of WINDOW time units at each fixed τ (adaptive = false, so that one rejected step, an
+#    energy rise above 'energy tolerance', ends the case) for each scheme.
+# Environment: CASES (default "prolate:3 oblate:3"), TAUS, SCHEMES (default "lagged implicit"), WINDOW (0.5),
+# WORK (default /tmp/fluid_surface_step_limit), ITERATIONS (N_g of scheme implicit, default 10), LIMIT (s/case).
+# Rows go to cases/<case>.csv, results.csv collects them; plot.py draws step_limit.png.
+set -u
+cd "$(dirname "$0")/../.."
+here=benchmarks/step_limit
+exe=${EXE:-$PWD/build/fluid_surface}
+cases=${CASES:-"prolate:3 oblate:3"}
+taus=${TAUS-"0.1 0.05 0.025 0.0125 0.00625 0.003125"}
+schemes=${SCHEMES:-"lagged implicit"}
+window=${WINDOW:-0.5}
+iterations=${ITERATIONS:-10}
+limit=${LIMIT:-3600}
+work=${WORK:-/tmp/fluid_surface_step_limit}
+if [ "${1:-}" = "--quick" ]; then cases="oblate:3"; taus="0.05 0.0125"; window=0.1; fi
+mkdir -p "$work" $here/cases
+
+scheme_lines() {
+  case $1 in
+    lagged) printf 'subsection geometry iteration\n  set maximum iterations = 0\nend\n' ;;
+    implicit) printf 'subsection geometry iteration\n  set maximum iterations = %s\n  set tolerance = 1e-3\nend\n' "$iterations" ;;
+  esac
+}
+
+for c in $cases; do
+  shape=${c%%:*}; r=${c##*:}
+  # inside the fastest part of the transformation (benchmarks/phase3/experiments: the τ of the adaptive runs)
+  case $shape:$r in prolate:3) t0=20;; prolate:*) t0=18;; oblate:*) t0=4.75;; esac
+  start=$work/start_${shape}_r$r
+  if [ ! -f $start/checkpoint/last ] || ! grep -q "status: completed" $start/summary 2>/dev/null; then
+    cat > $work/start_${shape}_r$r.prm <<PRM
+include $PWD/prm/${shape}_long.prm
+subsection geometry
+  set refinement = $r
+end
+subsection time stepping
+  set end time = $t0
+end
+subsection output
+  set output directory = $start
+  set write vtu = false
+  set screen interval = 100000
+end
+subsection checkpoint
+  set resume = auto
+end
+PRM
+    echo "start checkpoint $shape r$r (t = $t0)"
+    $exe $work/start_${shape}_r$r.prm > $work/start_${shape}_r$r.log 2>&1 || { echo "start run failed"; tail -3 $work/start_${shape}_r$r.log; continue; }
+  fi
+  for s in $schemes; do for tau in $taus; do
+    name=${shape}_r${r}_${s}_tau$tau
+    dir=$work/$name
+    rm -rf $dir; mkdir -p $dir
+    cp -r $start/checkpoint $start/statistics $dir/
+    cat > $work/$name.prm <<PRM
+include $PWD/prm/${shape}_long.prm
+subsection geometry
+  set refinement = $r
+end
+subsection time stepping
+  set end time = $(echo "$t0 + $window" | bc -l)
+  set adaptive = false
+  set time step = $tau
+end
+subsection output
+  set output directory = $dir
+  set write vtu = false
+  set screen interval = 100000
+end
+subsection checkpoint
+  set resume = true
+  set wall time between checkpoints = 0
+end
+$(scheme_lines $s)
+PRM
+    begin=$(date +%s.%N)
+    timeout $limit $exe $work/$name.prm > $work/$name.log 2>&1; status=$?
+    wall=$(echo "$(date +%s.%N) - $begin" | bc)
+    /usr/bin/python3 $here/summarize.py $dir/statistics "$shape" "$r" "$s" "$tau" "$t0" "$window" "$status" "$wall" \
+      "$(grep -h -m1 'rejected at' $work/$name.log | head -c 300)" > $here/cases/$name.csv
+    tail -1 $here/cases/$name.csv
+  done; done
+done
+{ echo "shape,refinement,scheme,tau,t0,window,exit,t reached,completed,steps,F end,max rise/(tau F),geometry iterations mean,geometry iterations max,factorizations,wall s,s per step,reason"
+  cat $here/cases/*.csv; } > $here/results.csv
+/usr/bin/python3 $here/plot.py $here/results.csv $here/step_limit.png
