@@ -13,7 +13,7 @@ the Agg backend is used, so no display is required.
 
 Input
 -----
-``statistics`` as written by the program (README, "Running"): ``# N: name``
+``statistics`` as written by the program (doc/output.md): ``# N: name``
 header lines followed by whitespace-separated rows.  Columns are looked up by
 *name*, never by position.  A partial last line (a run that is still writing)
 and other malformed rows are skipped with a note on stderr.  If the time goes
