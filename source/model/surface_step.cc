@@ -197,7 +197,7 @@ namespace FluidSurface
   double
   SurfaceStep::estimate_error(const VectorType &new_state, const VectorType &old_normal, const double tau)
   {
-    if (candidate_normal_speed.size() != current.size())
+    if (candidate_normal_speed.size() != state.solution.size())
       candidate_normal_speed.reinit(owned, geometry.get_communicator());
     double largest_difference = 0;
     for (unsigned int n = 0; n < new_position_nodes.size(); ++n)
