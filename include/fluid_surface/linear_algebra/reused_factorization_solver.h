@@ -42,8 +42,9 @@ namespace FluidSurface
    * which stops at the true residual ‖b − Kx‖ ≤ `tolerance` ‖b‖. The matrix is factorized anew when GMRES
    * needs more than `max reuse iterations` (the solve is then repeated directly), after a failed solve, and
    * when the owner asks for it (a rejected step, a changed time step size); the symbolic analysis of the
-   * factorization is kept while the matrix keeps its sparsity pattern (AmesosFactorization). Scene full solves its bordered
-   * step system with it, scene fixed surface its saddle-point system (`linear solver = direct`).
+   * factorization is kept while the matrix keeps its sparsity pattern (AmesosFactorization). Scene full
+   * solves its bordered step system with it, scene fixed surface its saddle-point system
+   * (`linear solver = direct`).
    */
   class ReusedFactorizationSolver
   {
@@ -117,8 +118,9 @@ namespace FluidSurface
 
     /**
      * Solves @p system x = @p b. @p matrix is what is factorized: @p system itself, or its block when
-     * @p system borders it. @p preconditioner is built from the factors by its initialize(AmesosFactorization &),
-     * and its vmult() is the exact inverse of @p system when the factors are of @p matrix. @p x is the
+     * @p system borders it. @p preconditioner is built from the factors by its
+     * initialize(AmesosFactorization &), and its vmult() is the exact inverse of @p system when the factors
+     * are of @p matrix. @p x is the
      * initial guess of GMRES. A failed factorization or solve throws LinearSolverError (the next solve then
      * factorizes again); what Amesos prints on std::cerr meanwhile goes into its details(), not on the screen.
      *
