@@ -91,7 +91,7 @@ namespace FluidSurface
   {}
 
   void
-  BorderedFactorizationPreconditioner::initialize(TrilinosWrappers::SolverDirect &factors)
+  BorderedFactorizationPreconditioner::initialize(AmesosFactorization &factors)
   {
     factorization      = &factors;
     const unsigned int n = system.columns.size();

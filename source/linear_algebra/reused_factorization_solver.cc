@@ -101,9 +101,13 @@ namespace FluidSurface
     std::optional<TimerOutput::Scope> section;
     if (step_timer)
       section.emplace(*step_timer, "factorization");
-    factorization = std::make_unique<TrilinosWrappers::SolverDirect>(
-      factorization_control, TrilinosWrappers::SolverDirect::AdditionalData(false, direct_solver()));
-    factorization->initialize(matrix);
+    if (!factorization)
+      {
+        AmesosFactorization::Options options;
+        options.package = direct_solver();
+        factorization   = std::make_unique<AmesosFactorization>(options);
+      }
+    factorization->factorize(matrix, step_timer);
     factors_of_current_matrix = true;
     factorization_requested   = false;
     ++factorization_count;
@@ -165,7 +169,7 @@ namespace FluidSurface
     std::string stage = "the GMRES solve preconditioned by the kept " + direct_solver() + " factors";
     try
       {
-        if (!factorization || factorization_requested ||
+        if (!factorization || !factorization->has_factors() || factorization_requested ||
             (!parameters.reuse_factorization && !factors_of_current_matrix))
           {
             stage = "the " + direct_solver() + " factorization";

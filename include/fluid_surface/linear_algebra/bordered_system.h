@@ -4,10 +4,11 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
-#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
+
+#include <fluid_surface/linear_algebra/amesos_factorization.h>
 
 #include <vector>
 
@@ -71,7 +72,7 @@ namespace FluidSurface
 
     /// Uses the factors of A₀ (kept by the caller): Z = A₀⁻¹ C and S⁻¹.
     void
-    initialize(dealii::TrilinosWrappers::SolverDirect &factorization);
+    initialize(AmesosFactorization &factorization);
 
     /// dst = K₀⁻¹ src: y = A₀⁻¹ r, μ = S⁻¹(Rᵀy − s), x = y − Zμ.
     void
@@ -89,10 +90,10 @@ namespace FluidSurface
     std::vector<double>
     schur_solve(const BorderedSystem::Vector &x, const std::vector<double> &g) const;
 
-    dealii::TrilinosWrappers::SolverDirect *factorization = nullptr;
-    const BorderedSystem                   &system;
-    std::vector<BorderedSystem::Vector>     z;
-    dealii::FullMatrix<double>              schur_inverse;
+    AmesosFactorization                *factorization = nullptr;
+    const BorderedSystem               &system;
+    std::vector<BorderedSystem::Vector> z;
+    dealii::FullMatrix<double>          schur_inverse;
   };
 } // namespace FluidSurface
 

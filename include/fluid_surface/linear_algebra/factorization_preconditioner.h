@@ -2,7 +2,7 @@
 #define fluid_surface_linear_algebra_factorization_preconditioner_h
 
 #include <deal.II/base/exceptions.h>
-#include <deal.II/lac/trilinos_solver.h>
+#include <fluid_surface/linear_algebra/amesos_factorization.h>
 
 namespace FluidSurface
 {
@@ -15,7 +15,7 @@ namespace FluidSurface
   public:
     /// Uses the factors @p lu (kept by the caller).
     void
-    initialize(dealii::TrilinosWrappers::SolverDirect &lu)
+    initialize(AmesosFactorization &lu)
     {
       factors = &lu;
     }
@@ -30,7 +30,7 @@ namespace FluidSurface
     }
 
   private:
-    dealii::TrilinosWrappers::SolverDirect *factors = nullptr;
+    AmesosFactorization *factors = nullptr;
   };
 } // namespace FluidSurface
 

@@ -3,9 +3,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <fluid_surface/linear_algebra/amesos_factorization.h>
 
 #include <memory>
 #include <stdexcept>
@@ -41,8 +41,10 @@ namespace FluidSurface
    * direct; on the nearby matrices of later steps the kept factors are the right preconditioner of GMRES,
    * which stops at the true residual ‖b − Kx‖ ≤ `tolerance` ‖b‖. The matrix is factorized anew when GMRES
    * needs more than `max reuse iterations` (the solve is then repeated directly), after a failed solve, and
-   * when the owner asks for it (a rejected step, a changed time step size). Scene full solves its bordered
-   * step system with it, scene fixed surface its saddle-point system (`linear solver = direct`).
+   * when the owner asks for it (a rejected step, a changed time step size); the symbolic analysis of the
+   * factorization is kept while the matrix keeps its sparsity pattern (AmesosFactorization). Scene full
+   * solves its bordered step system with it, scene fixed surface its saddle-point system
+   * (`linear solver = direct`).
    */
   class ReusedFactorizationSolver
   {
@@ -110,14 +112,15 @@ namespace FluidSurface
     {
       factorization_requested = true;
     }
-    /// Frees the factors (MUMPS keeps its own copy of them); the next solve factorizes.
+    /// Frees the factors and their analysis (MUMPS keeps its own copy of them); the next solve factorizes.
     void
     release();
 
     /**
      * Solves @p system x = @p b. @p matrix is what is factorized: @p system itself, or its block when
-     * @p system borders it. @p preconditioner is built from the factors by its initialize(SolverDirect &),
-     * and its vmult() is the exact inverse of @p system when the factors are of @p matrix. @p x is the
+     * @p system borders it. @p preconditioner is built from the factors by its
+     * initialize(AmesosFactorization &), and its vmult() is the exact inverse of @p system when the factors
+     * are of @p matrix. @p x is the
      * initial guess of GMRES. A failed factorization or solve throws LinearSolverError (the next solve then
      * factorizes again); what Amesos prints on std::cerr meanwhile goes into its details(), not on the screen.
      *
@@ -158,10 +161,9 @@ namespace FluidSurface
                             PreconditionerType &preconditioner,
                             unsigned int       &iterations);
 
-    Parameters                                              parameters;
-    std::string                                             scene_direct_solver;
-    dealii::SolverControl                                   factorization_control;
-    std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> factorization;
+    Parameters                           parameters;
+    std::string                          scene_direct_solver;
+    std::unique_ptr<AmesosFactorization> factorization;
     bool                 factors_of_current_matrix = false; ///< the factors are of the matrix of the next solve
     bool                 factorization_requested   = true;
     unsigned int         factorization_count       = 0;

@@ -1,0 +1,98 @@
+#ifndef fluid_surface_linear_algebra_amesos_factorization_h
+#define fluid_surface_linear_algebra_amesos_factorization_h
+
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+class Amesos_BaseSolver;
+class Epetra_Comm;
+class Epetra_CrsMatrix;
+class Epetra_LinearProblem;
+class Epetra_Map;
+
+namespace FluidSurface
+{
+  /**
+   * A sparse LU factorization PAQ = LU of a TrilinosWrappers::SparseMatrix by an Amesos package (Amesos_Klu,
+   * Amesos_Mumps), split into the symbolic analysis (fill-reducing ordering, elimination tree, memory) and
+   * the numeric factorization. The analysis depends on the sparsity pattern only, so factorize() redoes it
+   * only when the matrix is another Epetra object than the analysed one or its pattern changed (new DoFs,
+   * a checkpoint loaded), and otherwise only the numeric factorization of the new values.
+   *
+   * With Amesos_Mumps, `mumps_ordering` is MUMPS' ICNTL(7) (0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS,
+   * 6 QAMD, 7 automatic) and `low_rank_tolerance` > 0 switches on MUMPS' block-low-rank factorization
+   * (ICNTL(35) = 2) with dropping threshold CNTL(7) = `low_rank_tolerance`: the factors are then those of
+   * a matrix within about that relative distance, a preconditioner, not an inverse.
+   */
+  class AmesosFactorization
+  {
+  public:
+    /// The Amesos package and the MUMPS controls of the factorizations.
+    struct Options
+    {
+      std::string package            = "Amesos_Mumps";
+      int         mumps_ordering     = 7;   ///< ICNTL(7); 7: MUMPS chooses
+      double      low_rank_tolerance = 0.0; ///< CNTL(7) of the block-low-rank factorization; 0: full rank
+    };
+
+    explicit AmesosFactorization(const Options &options);
+    ~AmesosFactorization();
+    AmesosFactorization(const AmesosFactorization &) = delete;
+    AmesosFactorization &
+    operator=(const AmesosFactorization &) = delete;
+
+    /**
+     * Factorizes @p matrix (collective): the symbolic analysis if the pattern is not the analysed one, then
+     * the numeric factorization. Time goes to the section "symbolic factorization" of @p timer (nullptr:
+     * none) for the analysis; the caller times the whole. A failure throws ExcTrilinosError (the Amesos
+     * error code) and leaves no factors; a failed analysis is redone by the next call.
+     */
+    void
+    factorize(const dealii::TrilinosWrappers::SparseMatrix &matrix, dealii::TimerOutput *timer = nullptr);
+
+    /// dst = (LU)⁻¹ src with the factors of the last factorize() (collective).
+    void
+    solve(dealii::TrilinosWrappers::MPI::Vector &dst, const dealii::TrilinosWrappers::MPI::Vector &src);
+
+    /// Whether factorize() succeeded since construction or the last failure.
+    bool
+    has_factors() const
+    {
+      return factorized;
+    }
+
+    /// The number of symbolic analyses so far.
+    unsigned int
+    n_symbolic_factorizations() const
+    {
+      return symbolic_count;
+    }
+
+  private:
+    /// Whether the analysis of the kept solver is that of @p matrix (collective).
+    bool
+    analysis_fits(const Epetra_CrsMatrix &matrix, std::uint64_t pattern_hash) const;
+    /// Destroys the Amesos solver while its linear problem points at a live matrix (MUMPS frees its
+    /// instance on the matrix's communicator).
+    void
+    destroy_solver();
+
+    Options                               options;
+    std::unique_ptr<Epetra_LinearProblem> problem;
+    std::unique_ptr<Amesos_BaseSolver>    solver;
+    std::unique_ptr<Epetra_Comm>          comm;          ///< a copy of the analysed matrix's communicator
+    std::unique_ptr<Epetra_Map>           empty_map;     ///< of the placeholder matrix
+    std::unique_ptr<Epetra_CrsMatrix>     placeholder;   ///< empty, on `comm`: the operator while destroying
+    const Epetra_CrsMatrix               *analysed       = nullptr;
+    std::uint64_t                         analysed_hash  = 0;
+    bool                                  factorized     = false;
+    unsigned int                          symbolic_count = 0;
+  };
+} // namespace FluidSurface
+
+#endif

@@ -1,0 +1,157 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/exceptions.h>
+
+#include <fluid_surface/linear_algebra/amesos_factorization.h>
+
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
+#include <Epetra_Comm.h>
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_LinearProblem.h>
+#include <Epetra_Map.h>
+#include <Epetra_MpiComm.h>
+#include <Teuchos_ParameterList.hpp>
+
+#include <optional>
+
+namespace FluidSurface
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// Amesos_Mumps passes CNTL(1..5) only; the block-low-rank threshold CNTL(7) is set on MUMPS' own
+    /// structure after the analysis (MUMPS reads it in the numeric factorization).
+    class MumpsSolver : public Amesos_Mumps
+    {
+    public:
+      using Amesos_Mumps::Amesos_Mumps;
+      void
+      set_cntl(const int position, const double value)
+      {
+        MDS.cntl[position - 1] = value;
+      }
+    };
+
+    /// A hash of the global (row, column) pairs of the locally owned rows of @p matrix.
+    std::uint64_t
+    hash_pattern(const Epetra_CrsMatrix &matrix)
+    {
+      std::uint64_t  hash = 1469598103934665603ull;
+      const auto     mix  = [&hash](const long long value) {
+        hash ^= static_cast<std::uint64_t>(value);
+        hash *= 1099511628211ull;
+      };
+      const Epetra_BlockMap &rows = matrix.RowMap(), &columns = matrix.ColMap();
+      for (int i = 0; i < matrix.NumMyRows(); ++i)
+        {
+          int  n       = 0;
+          int *indices = nullptr;
+          matrix.Graph().ExtractMyRowView(i, n, indices);
+          mix(-1 - rows.GID64(i));
+          for (int k = 0; k < n; ++k)
+            mix(columns.GID64(indices[k]));
+        }
+      return hash;
+    }
+  } // namespace
+
+  AmesosFactorization::AmesosFactorization(const Options &options)
+    : options(options)
+  {}
+
+  AmesosFactorization::~AmesosFactorization()
+  {
+    destroy_solver();
+  }
+
+  void
+  AmesosFactorization::destroy_solver()
+  {
+    if (solver)
+      {
+        if (!placeholder)
+          {
+            empty_map   = std::make_unique<Epetra_Map>(0, 0, *comm);
+            placeholder = std::make_unique<Epetra_CrsMatrix>(Copy, *empty_map, 0);
+            placeholder->FillComplete();
+          }
+        problem->SetOperator(placeholder.get());
+        solver.reset();
+      }
+    problem.reset();
+    analysed   = nullptr;
+    factorized = false;
+  }
+
+  bool
+  AmesosFactorization::analysis_fits(const Epetra_CrsMatrix &matrix, const std::uint64_t pattern_hash) const
+  {
+    const bool fits_here = solver && analysed == &matrix && analysed_hash == pattern_hash;
+    const auto &mpi_comm = dynamic_cast<const Epetra_MpiComm &>(matrix.Comm());
+    return dealii::Utilities::MPI::min(fits_here ? 1 : 0, mpi_comm.GetMpiComm()) == 1;
+  }
+
+  void
+  AmesosFactorization::factorize(const TrilinosWrappers::SparseMatrix &matrix, TimerOutput *timer)
+  {
+    const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
+    const std::uint64_t     hash   = hash_pattern(epetra);
+    factorized                     = false;
+    if (!analysis_fits(epetra, hash))
+      {
+        std::optional<TimerOutput::Scope> section;
+        if (timer)
+          section.emplace(*timer, "symbolic factorization");
+        destroy_solver();
+        comm.reset(epetra.Comm().Clone());
+        placeholder.reset();
+        empty_map.reset();
+        problem = std::make_unique<Epetra_LinearProblem>();
+        problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&epetra));
+        Teuchos::ParameterList parameters;
+        if (options.package == "Amesos_Mumps")
+          {
+            solver = std::make_unique<MumpsSolver>(*problem);
+            Teuchos::ParameterList &mumps = parameters.sublist("mumps");
+            mumps.set("ICNTL(7)", options.mumps_ordering);
+            if (options.low_rank_tolerance > 0)
+              mumps.set("ICNTL(35)", 2);
+          }
+        else
+          {
+            Amesos factory;
+            AssertThrow(factory.Query(options.package.c_str()),
+                        ExcMessage("The Amesos package " + options.package + " is not available."));
+            solver.reset(factory.Create(options.package.c_str(), *problem));
+          }
+        solver->SetParameters(parameters);
+        const int ierr = solver->SymbolicFactorization();
+        if (ierr != 0)
+          {
+            destroy_solver();
+            AssertThrow(false, ExcTrilinosError(ierr));
+          }
+        if (auto *mumps = dynamic_cast<MumpsSolver *>(solver.get()); mumps && options.low_rank_tolerance > 0)
+          mumps->set_cntl(7, options.low_rank_tolerance);
+        analysed      = &epetra;
+        analysed_hash = hash;
+        ++symbolic_count;
+      }
+    const int ierr = solver->NumericFactorization();
+    AssertThrow(ierr == 0, ExcTrilinosError(ierr));
+    factorized = true;
+  }
+
+  void
+  AmesosFactorization::solve(TrilinosWrappers::MPI::Vector &dst, const TrilinosWrappers::MPI::Vector &src)
+  {
+    Assert(factorized, ExcNotInitialized());
+    problem->SetLHS(&dst.trilinos_vector());
+    problem->SetRHS(const_cast<Epetra_MultiVector *>(static_cast<const Epetra_MultiVector *>(&src.trilinos_vector())));
+    const int ierr = solver->Solve();
+    AssertThrow(ierr == 0, ExcTrilinosError(ierr));
+  }
+} // namespace FluidSurface
