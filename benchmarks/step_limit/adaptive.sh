@@ -13,7 +13,7 @@ exe=${EXE:-$PWD/build/fluid_surface}
 cases=${CASES:-"oblate:3 prolate:3"}
 tolerances=${TOLERANCES:-"1e-2 1e-3 1e-4"}
 window=${WINDOW:-0.5}
-work=${WORK:-/tmp/fluid_surface_step_limit}
+work=${WORK:-$PWD/benchmarks/step_limit/work}
 [ "${1:-}" = "--quick" ] && { cases="oblate:3"; tolerances="1e-2"; window=0.1; }
 mkdir -p $here/adaptive
 for c in $cases; do

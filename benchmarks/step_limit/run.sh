@@ -9,7 +9,7 @@
 # 2. From it, a window of WINDOW time units at each fixed τ (adaptive = false, so that one rejected step, an
 #    energy rise above 'energy tolerance', ends the case) for each scheme.
 # Environment: CASES (default "prolate:3 oblate:3"), TAUS, SCHEMES (default "lagged implicit"), WINDOW (0.5),
-# WORK (default /tmp/fluid_surface_step_limit), ITERATIONS (N_g of scheme implicit, default 10), LIMIT (s/case).
+# WORK (default benchmarks/step_limit/work, not committed), ITERATIONS (N_g of scheme implicit, default 10), LIMIT (s/case).
 # Rows go to cases/<case>.csv, results.csv collects them; plot.py draws step_limit.png.
 set -u
 cd "$(dirname "$0")/../.."
@@ -21,7 +21,7 @@ schemes=${SCHEMES:-"lagged implicit"}
 window=${WINDOW:-0.5}
 iterations=${ITERATIONS:-10}
 limit=${LIMIT:-3600}
-work=${WORK:-/tmp/fluid_surface_step_limit}
+work=${WORK:-$PWD/benchmarks/step_limit/work}
 if [ "${1:-}" = "--quick" ]; then cases="oblate:3"; taus="0.05 0.0125"; window=0.1; fi
 mkdir -p "$work" $here/cases
 
