@@ -8,8 +8,8 @@
 #    $WORK and reused).
 # 2. From it, a window of WINDOW time units at each fixed τ (adaptive = false, so that one rejected step, an
 #    energy rise above 'energy tolerance', ends the case) for each scheme.
-# Environment: CASES (default "prolate:3 oblate:3"), TAUS, SCHEMES (default "lagged implicit"), WINDOW (0.5),
-# WORK (default benchmarks/step_limit/work, not committed), ITERATIONS (N_g of scheme implicit, default 10), LIMIT (s/case).
+# Environment: CASES (default "prolate:3 oblate:3"), TAUS, SCHEMES (default "lagged anderson"; also aitken, normal, metric), WINDOW (0.5),
+# WORK (default benchmarks/step_limit/work, not committed), ITERATIONS (N_g of the iterated schemes, default 10), LIMIT (s/case).
 # Rows go to cases/<case>.csv, results.csv collects them; plot.py draws step_limit.png.
 set -u
 cd "$(dirname "$0")/../.."
@@ -17,7 +17,7 @@ here=benchmarks/step_limit
 exe=${EXE:-$PWD/build/fluid_surface}
 cases=${CASES:-"prolate:3 oblate:3"}
 taus=${TAUS-"0.1 0.05 0.025 0.0125 0.00625 0.003125"}
-schemes=${SCHEMES:-"lagged implicit"}
+schemes=${SCHEMES:-"lagged anderson"}
 window=${WINDOW:-0.5}
 iterations=${ITERATIONS:-10}
 limit=${LIMIT:-3600}
@@ -25,10 +25,20 @@ work=${WORK:-$PWD/benchmarks/step_limit/work}
 if [ "${1:-}" = "--quick" ]; then cases="oblate:3"; taus="0.05 0.0125"; window=0.1; fi
 mkdir -p "$work" $here/cases
 
+# lagged: one solve on S^m. aitken, anderson: the implicit geometry with that relaxation. normal, metric: only ñ (with
+# c) or only the metric from the iterate (which lagged quantity sets the limit), Anderson's mixing. all1, normal1:
+# one re-assembly whatever its change (tolerance 0: a predictor–corrector step of two solves); mid1: all1 on the
+# midpoint surface (time level ½).
 scheme_lines() {
+  iterate() { printf 'subsection geometry iteration\n  set maximum iterations = %s\n  set tolerance = %s\n  set relaxation = %s\n  set implicit = %s\n  set time level = %s\nend\n' "$1" "$2" "$3" "$4" "${5:-1}"; }
   case $1 in
     lagged) printf 'subsection geometry iteration\n  set maximum iterations = 0\nend\n' ;;
-    implicit) printf 'subsection geometry iteration\n  set maximum iterations = %s\n  set tolerance = 1e-3\nend\n' "$iterations" ;;
+    aitken) iterate $iterations 1e-3 aitken all ;;
+    anderson) iterate $iterations 1e-3 anderson all ;;
+    normal|metric) iterate $iterations 1e-3 anderson $1 ;;
+    all1) iterate 1 0 anderson all ;;
+    normal1) iterate 1 0 anderson normal ;;
+    mid1) iterate 1 0 anderson all 0.5 ;;
   esac
 }
 

@@ -799,14 +799,24 @@ namespace FluidSurface
         const Implicit   implicit = geometry_iteration.implicit;
         VectorType       iterate_normal;
         bool             converged = false;
-        // The surface Ỹ_k the step is assembled on, its residual r_k = G(Ỹ_k) − Ỹ_k (G: the solve's new position)
-        // and the relaxation ω_k of Ỹ_{k+1} = Ỹ_k + ω_k r_k (Aitken: from r_k and r_{k−1}; 1: plain fixed point).
-        VectorType surface = solution.block(0), residual, last_residual;
-        double     omega   = 1;
+        // The surface Ỹ_k the step is assembled on; the next one from Ỹ_k and G(Ỹ_k), the solve's new position.
+        VectorType             surface = solution.block(0);
+        FixedPointAcceleration acceleration(geometry_iteration,
+                                            [this](const VectorType &a, const VectorType &b) { return position_dot(a, b); });
         for (unsigned int k = 1; k <= geometry_iteration.max_iterations && !converged; ++k)
           {
             candidate_solution = surface;
             copy_new_position_to_geometry(candidate_solution);
+            if (geometry_iteration.time_level < 1)
+              {
+                // S^{m+θ}: X^m + θ (Ỹ_k − X^m)
+                VectorType level(geometry.locally_owned_dofs(), geometry.get_communicator()),
+                  old(geometry.locally_owned_dofs(), geometry.get_communicator());
+                level = geometry.position();
+                old   = *old_position;
+                level.sadd(geometry_iteration.time_level, 1 - geometry_iteration.time_level, old);
+                geometry.set_position(level);
+              }
             {
               TimerSection section(step_timer, "assembly");
               geometry.compute_curvature();
@@ -827,21 +837,9 @@ namespace FluidSurface
               return result;
             result.geometry_iterations = k;
             result.geometry_change     = largest_node_move(solution.block(0), surface) / node_spacing;
-            converged                  = result.geometry_change <= geometry_iteration.tolerance;
-            if (converged)
-              break;
-            residual = solution.block(0);
-            residual -= surface;
-            if (geometry_iteration.aitken && k > 1)
-              {
-                VectorType difference = residual;
-                difference -= last_residual;
-                const double denominator = position_dot(difference, difference);
-                if (denominator > 0)
-                  omega = std::min(2.0, std::max(0.1, -omega * position_dot(last_residual, difference) / denominator));
-              }
-            surface.add(omega, residual);
-            last_residual = residual;
+            converged                  = geometry_iteration.converged(k, result.geometry_change);
+            if (!converged)
+              acceleration.advance(surface, solution.block(0));
           }
         if (!converged)
           {

@@ -2,16 +2,20 @@
 #define fluid_surface_model_geometry_iteration_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <deque>
+#include <functional>
 
 namespace FluidSurface
 {
   /**
    * The implicit geometry of one step (`subsection geometry iteration`): the step system, assembled on the
    * surface S^m of the last step (the lagged scheme), is assembled again on the surface S^{m+1,k} of its own
-   * solution and solved again (GMRES preconditioned by the kept factorization), until the new nodes move by
-   * less than ε_g h between two iterates (h = √(A/N_cells)/k, the node spacing). The data of the old time level
-   * (u^m, X^m, the rigid motion of the shape, the drift corrections) stay those of S^m; the normal ñ, the
-   * curvature coefficient c, the metric and the transport gradient G^m = ∇_S u^m are those of the iterate.
+   * solution and solved again (GMRES preconditioned by the kept factorization), N_g times or until the new nodes
+   * move by less than ε_g h between two iterates (h = √(A/N_cells)/k, the node spacing). The data of the old time
+   * level (u^m, X^m, the rigid motion of the shape, the drift corrections) stay those of S^m; what comes from the
+   * iterate is chosen by `implicit`; one re-assembly without a test (ε_g = 0) is a predictor–corrector step.
    * doc/scheme.md, "Implicit geometry".
    */
   struct GeometryIteration
@@ -30,9 +34,9 @@ namespace FluidSurface
       return max_iterations > 0;
     }
 
-    /// What the re-assemblies take from the iterate S^{m+1,k}: everything, or (to find out which lagged quantity
-    /// limits the lagged step, benchmarks/step_limit) only the normal field ñ (with c, from its gradient) or only
-    /// the metric (the mapping: surface gradients, ν, P, the transport gradient, the mesh law), the other from S^m.
+    /// What the re-assemblies take from the iterate S^{m+1,k}: everything, only the normal field ñ (with c, from its
+    /// gradient), or only the metric (the mapping: surface gradients, ν, P, the transport gradient, the mesh law),
+    /// the rest from S^m.
     enum class Implicit
     {
       all,
@@ -40,10 +44,63 @@ namespace FluidSurface
       metric
     };
 
+    /// How the next iterate is taken from the last ones (FixedPointAcceleration).
+    enum class Relaxation
+    {
+      none,
+      aitken,
+      anderson
+    };
+
     unsigned int max_iterations = 0;    ///< N_g: re-assemblies after the first solve; 0: the lagged scheme
     Implicit     implicit       = Implicit::all; ///< which geometric quantities come from the iterate
-    bool         aitken         = true; ///< Aitken relaxation of the iterates (false: the plain fixed point)
-    double       tolerance      = 1e-3; ///< ε_g: the iteration stops when max |Y^{k+1} − Y^k| ≤ ε_g h
+    Relaxation   relaxation     = Relaxation::anderson; ///< how the next iterate is formed
+    double       time_level     = 1;    ///< θ: the re-assemblies are on S^{m+θ} = X^m + θ (Ỹ_k − X^m)
+    unsigned int anderson_depth = 5;    ///< m: the number of last residual differences Anderson's mixing uses
+    double       tolerance      = 1e-3; ///< ε_g: the iteration stops when max |Y^{k+1} − Y^k| ≤ ε_g h; 0: after N_g
+
+    /// Whether the iteration stops at iterate @p k (1 ≤ k ≤ N_g) whose nodes moved by @p change (in units of h).
+    bool
+    converged(const unsigned int k, const double change) const
+    {
+      return tolerance > 0 ? change <= tolerance : k == max_iterations;
+    }
+  };
+
+  /**
+   * The next iterate x_{k+1} of a fixed point x = G(x) from x_k, its image G(x_k) and the earlier iterates, with
+   * the residual r_k = G(x_k) − x_k measured by a given inner product (the step: the new positions only).
+   * - none: x_{k+1} = G(x_k).
+   * - aitken: x_{k+1} = x_k + ω_k r_k, ω_k = −ω_{k−1} r_{k−1}·(r_k − r_{k−1})/|r_k − r_{k−1}|², clipped to [0.1, 2].
+   * - anderson: Anderson's mixing of depth m (Walker & Ni 2011): x_{k+1} = G(x_k) − Σ_i γ_i ΔG_i with the γ that
+   *   minimize |r_k − Σ_i γ_i Δr_i| over the last m differences Δr_i = r_{i+1} − r_i, ΔG_i = G(x_{i+1}) − G(x_i).
+   *   For a linear G it is GMRES on x − G(x) = 0, so it converges where the fixed point does not (a few
+   *   eigenvalues of G' outside the unit disc) and in fewer iterations where it does.
+   */
+  class FixedPointAcceleration
+  {
+  public:
+    using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+    /// The inner product in which the residuals are measured.
+    using InnerProduct = std::function<double(const VectorType &, const VectorType &)>;
+
+    /// The acceleration @p parameters.relaxation of depth @p parameters.anderson_depth, residuals measured by @p dot.
+    FixedPointAcceleration(const GeometryIteration &parameters, InnerProduct dot);
+
+    /// Replaces @p x (the iterate x_k) by x_{k+1}, given @p image = G(x_k).
+    void
+    advance(VectorType &x, const VectorType &image);
+
+  private:
+    const GeometryIteration::Relaxation relaxation;
+    const unsigned int                  depth;
+    const InnerProduct                  dot;
+    unsigned int                        iteration = 0;
+    double                              omega     = 1;     ///< Aitken's last ω
+    VectorType                          last_residual;     ///< r_{k−1}
+    VectorType                          last_image;        ///< G(x_{k−1})
+    std::deque<VectorType>              residual_changes;  ///< Δr_i, the newest last
+    std::deque<VectorType>              image_changes;     ///< ΔG_i, the newest last
   };
 } // namespace FluidSurface
 
