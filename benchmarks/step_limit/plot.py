@@ -8,25 +8,22 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 rows = list(csv.DictReader(open(sys.argv[1])))
-cases = sorted({(r["shape"], r["refinement"]) for r in rows})
-schemes = sorted({r["scheme"] for r in rows})
-fig, ax = plt.subplots(figsize=(7, 1 + 0.6 * len(cases) * len(schemes)))
+pairs = sorted({(r["shape"], r["refinement"], r["scheme"]) for r in rows})
+fig, ax = plt.subplots(figsize=(7, 1 + 0.4 * len(pairs)))
 labels = []
-for k, (shape, ref) in enumerate(cases):
-    for j, scheme in enumerate(schemes):
-        y = k * len(schemes) + j
-        labels.append(f"{shape} r{ref}, {scheme}")
-        for r in rows:
-            if (r["shape"], r["refinement"], r["scheme"]) != (shape, ref, scheme):
-                continue
-            ok = r["completed"] == "1"
-            ax.plot(float(r["tau"]), y, "o" if ok else "x", color="tab:green" if ok else "tab:red", ms=9)
+for y, (shape, ref, scheme) in enumerate(pairs):
+    labels.append(f"{shape} r{ref}, {scheme}")
+    for r in rows:
+        if (r["shape"], r["refinement"], r["scheme"]) != (shape, ref, scheme):
+            continue
+        ok = r["completed"] == "1"
+        ax.plot(float(r["tau"]), y, "o" if ok else "x", color="tab:green" if ok else "tab:red", ms=9)
 ax.set_xscale("log")
 ax.set_yticks(range(len(labels)))
 ax.set_yticklabels(labels)
 ax.set_xlabel("fixed time step τ")
 ax.set_title("Fixed τ inside the transformation: o window completed, x a rejected step or an unconverged iteration\n"
-             "(prm/prolate_long.prm from t = 20, prm/oblate_long.prm from t = 4.75, refinement 3)", fontsize=9)
+             "(prm/prolate_long.prm from t = 20, prm/oblate_long.prm from t = 4.75; refinement 3 and 4)", fontsize=9)
 ax.grid(True, axis="x", alpha=0.3)
 fig.tight_layout()
 fig.savefig(sys.argv[2], dpi=120)
