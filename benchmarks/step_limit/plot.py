@@ -22,8 +22,8 @@ ax.set_xscale("log")
 ax.set_yticks(range(len(labels)))
 ax.set_yticklabels(labels)
 ax.set_xlabel("fixed time step τ")
-ax.set_title("Fixed τ inside the transformation: o window completed, x a rejected step or an unconverged iteration\n"
-             "(prm/prolate_long.prm from t = 20, prm/oblate_long.prm from t = 4.75; refinement 3 and 4)", fontsize=9)
+ax.set_title("Fixed τ in the transformation: o completed, x energy rise or no convergence\n"
+             "prm/prolate_long.prm from t = 20, prm/oblate_long.prm from t = 4.75", fontsize=9)
 ax.grid(True, axis="x", alpha=0.3)
 fig.tight_layout()
 fig.savefig(sys.argv[2], dpi=120)
