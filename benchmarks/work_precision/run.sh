@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# benchmarks/work_precision: run time against error of the full model, prm/oblate.prm at refinement 3 to t = 7.
+# Each variant (a time-step setting of a scheme) runs once; its errors in F(t), ω(t) and e(λ)(t) on the grid
+# t = 0.25, 0.5, …, 7 and in t_sym_1e-2 are measured against a reference run of the lagged step with
+# τ_max = 2.5e-3 and energy tolerance 1e-4 (same mesh, so only the time discretization is measured).
+#   benchmarks/work_precision/run.sh [--quick]      from the repository root, after building
+# A completed run whose prm is unchanged is kept (FORCE=1: run it again).
+# Environment: VARIANTS (names below), WORK (default benchmarks/work_precision/work, not committed), EXE, JOBS (2).
+# Rows to runs/<variant>.csv, results.csv collects them with the errors; plot.py draws work_precision.png.
+set -u
+cd "$(dirname "$0")/../.."
+here=benchmarks/work_precision
+exe=${EXE:-$PWD/build/fluid_surface}
+work=${WORK:-$PWD/$here/work}
+jobs=${JOBS:-2}
+end=7
+variants=${VARIANTS:-"reference lagged_0.1 lagged_0.05 lagged_0.025 lagged_0.0125 lagged_0.05_e1e-4 normal1_0.05 normal1_0.025 normal1_0.0125 all1_0.05 all1_0.025"}
+if [ "${1:-}" = "--quick" ]; then variants="reference lagged_0.05 normal1_0.05"; end=1; work=$work/quick; fi
+mkdir -p "$work" $here/runs
+
+# <scheme>_<τ_max>[_e<energy tolerance>]; reference: lagged, τ_max = 2.5e-3, energy tolerance 1e-4.
+variant_lines() {
+  local v=$1 scheme tau energy=1e-3
+  [ $v = reference ] && v=lagged_0.0025_e1e-4
+  scheme=${v%%_*}; tau=${v#*_}; tau=${tau%%_*}
+  case $v in *_e*) energy=${v##*_e};; esac
+  printf 'subsection time stepping\n  set time step = %s\n  set maximum time step = %s\n  set energy tolerance = %s\nend\n' \
+    $(awk -v t=$tau 'BEGIN { print (t < 0.01 ? t : 0.01) }') $tau $energy
+  case $scheme in
+    lagged) printf 'subsection geometry iteration\n  set maximum iterations = 0\nend\n' ;;
+    normal1|all1) printf 'subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n  set implicit = %s\nend\n' ${scheme%1} ;;
+  esac
+}
+
+for v in $variants; do
+  dir=$work/$v
+  # a completed run of the same prm is kept (FORCE=1 runs it again)
+  (
+    cat > $work/$v.prm.new <<PRM
+include $PWD/prm/oblate.prm
+subsection geometry
+  set refinement = 3
+end
+subsection time stepping
+  set end time = $end
+end
+subsection output
+  set output directory = $dir
+  set overwrite = true
+  set write vtu = false
+  set screen interval = 100000
+end
+$(variant_lines $v)
+PRM
+    if [ -z "${FORCE:-}" ] && cmp -s $work/$v.prm.new $work/$v.prm && grep -q '^status: completed' $dir/summary 2>/dev/null; then
+      echo "$v: kept"; rm $work/$v.prm.new; exit 0
+    fi
+    mv $work/$v.prm.new $work/$v.prm
+    $exe $work/$v.prm > $work/$v.log 2>&1
+    echo "$v exit $?"
+  ) &
+  while [ $(jobs -r | wc -l) -ge $jobs ]; do sleep 2; done
+done
+wait
+/usr/bin/python3 $here/errors.py "$work" $end $variants > $here/results.csv
+/usr/bin/python3 $here/plot.py $here/results.csv $here/work_precision.png
+cat $here/results.csv
