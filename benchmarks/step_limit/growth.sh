@@ -4,7 +4,7 @@
 # t ≈ 1), for each scheme of run.sh; σ is the growth rate of the symmetry deviation e(λ) over t ∈ [1.5, 2.5]
 # (the linear phase; the lagged step gives σ ≈ 2.5 at every τ from 0.005 to 0.09). Rows to growth.csv.
 #   benchmarks/step_limit/growth.sh [--quick]        from the repository root, after building
-# Environment: SCHEMES (default "lagged normal1 all1 mid1"), TAUS (default "0.05 0.025 0.0125"), WORK, EXE, JOBS (2).
+# Environment: SCHEMES (default "lagged normal1 all1 mid1"), TAUS (default "0.05 0.025 0.0125"), WORK, EXE.
 set -u
 cd "$(dirname "$0")/../.."
 here=benchmarks/step_limit
@@ -12,7 +12,6 @@ exe=${EXE:-$PWD/build/fluid_surface}
 schemes=${SCHEMES:-"lagged normal1 all1 mid1"}
 taus=${TAUS:-"0.05 0.025 0.0125"}
 work=${WORK:-$PWD/benchmarks/step_limit/work}
-jobs=${JOBS:-2}
 [ "${1:-}" = "--quick" ] && { schemes="lagged normal1"; taus="0.05"; }
 mkdir -p "$work" $here/growth
 source <(sed -n '/^scheme_lines()/,/^}/p' $here/run.sh)
@@ -55,8 +54,6 @@ sigma = math.log(e1 / e0) / (t1 - t0) if e0 > 0 and e1 > 0 else float("nan")
 print(f"{scheme},{tau},{status},{t[-1]:.4g},{len(t) - 1},{e0:.4e},{e1:.4e},{sigma:.4f},{float(wall):.1f}")
 PY
     cat $here/growth/$name.csv
-  ) &
-  while [ $(jobs -r | wc -l) -ge $jobs ]; do sleep 2; done
+  )
 done; done
-wait
 { echo "scheme,tau max,exit,t reached,steps,e(1.5),e(2.5),growth rate,wall s"; cat $here/growth/*.csv; } > $here/growth.csv

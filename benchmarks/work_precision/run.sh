@@ -5,20 +5,21 @@
 # τ_max = 2.5e-3 and energy tolerance 1e-4 (same mesh, so only the time discretization is measured).
 #   benchmarks/work_precision/run.sh [--quick]      from the repository root, after building
 # A completed run whose prm is unchanged is kept (FORCE=1: run it again).
-# Environment: VARIANTS (names below), WORK (default benchmarks/work_precision/work, not committed), EXE, JOBS (2).
+# Environment: VARIANTS (names below), WORK (default benchmarks/work_precision/work, not committed), EXE.
 # Rows to runs/<variant>.csv, results.csv collects them with the errors; plot.py draws work_precision.png.
 set -u
 cd "$(dirname "$0")/../.."
 here=benchmarks/work_precision
 exe=${EXE:-$PWD/build/fluid_surface}
 work=${WORK:-$PWD/$here/work}
-jobs=${JOBS:-2}
 end=7
 variants=${VARIANTS:-"reference lagged_0.1 lagged_0.05 lagged_0.025 lagged_0.0125 lagged_0.05_e1e-4 normal1_0.05 normal1_0.025 normal1_0.0125 all1_0.05 all1_0.025"}
 if [ "${1:-}" = "--quick" ]; then variants="reference lagged_0.05 normal1_0.05"; end=1; work=$work/quick; fi
 mkdir -p "$work" $here/runs
 
-# <scheme>_<τ_max>[_e<energy tolerance>]; reference: lagged, τ_max = 2.5e-3, energy tolerance 1e-4.
+# <scheme>_<τ_max>[_e<energy tolerance>]; reference: lagged, τ_max = 2.5e-3, energy tolerance 1e-4. Schemes: lagged;
+# normal1, all1: the predictor–corrector step (one re-assembly with ñ and c, or all geometry, of the predicted
+# surface); after1: lagged until the energy check rejects a step, then all1 for the retry and the next 20 steps.
 variant_lines() {
   local v=$1 scheme tau energy=1e-3
   [ $v = reference ] && v=lagged_0.0025_e1e-4
@@ -29,6 +30,7 @@ variant_lines() {
   case $scheme in
     lagged) printf 'subsection geometry iteration\n  set maximum iterations = 0\nend\n' ;;
     normal1|all1) printf 'subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n  set implicit = %s\nend\n' ${scheme%1} ;;
+    after1) printf 'subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n  set apply = after rejection\nend\n' ;;
   esac
 }
 
@@ -58,10 +60,8 @@ PRM
     mv $work/$v.prm.new $work/$v.prm
     $exe $work/$v.prm > $work/$v.log 2>&1
     echo "$v exit $?"
-  ) &
-  while [ $(jobs -r | wc -l) -ge $jobs ]; do sleep 2; done
+  )
 done
-wait
 /usr/bin/python3 $here/errors.py "$work" $end $variants > $here/results.csv
 /usr/bin/python3 $here/plot.py $here/results.csv $here/work_precision.png
 cat $here/results.csv

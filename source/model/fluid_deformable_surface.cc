@@ -258,7 +258,7 @@ namespace FluidSurface
   {
     state.position = geometry.position();
     state.solution = step.candidate();
-    step.accept_error_history();
+    step.accept_history();
   }
 
   void
@@ -313,7 +313,7 @@ namespace FluidSurface
     // The seeded random fields are drawn in setup() only; the seed is kept for the record.
     data.set("model/random seed", random_seed);
     reparametrization.save(data);
-    step.save_error_history(data);
+    step.save_history(data);
   }
 
   void
@@ -328,7 +328,7 @@ namespace FluidSurface
     set_reference_position();
     step.set_n_factorizations(data.get_unsigned("model/factorizations"));
     reparametrization.load(data);
-    step.load_error_history(data);
+    step.load_history(data);
     geometry.compute_curvature();
   }
 } // namespace FluidSurface

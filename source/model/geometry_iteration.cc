@@ -21,6 +21,20 @@ namespace FluidSurface
                       "re-assemblies is rejected (τ halves); with ε_g = 0 the N_g-th solve is taken (N_g = 1: a "
                       "predictor–corrector step of two solves). 0: the lagged scheme, one solve on S^m (doc/scheme.md, "
                       "\"Implicit geometry\": why it is the default).");
+    prm.declare_entry("apply",
+                      "always",
+                      Patterns::Selection("always|after rejection"),
+                      "Which flow steps iterate their geometry (N_g > 0). always: every one. after rejection: the "
+                      "lagged step (one solve) until the energy check rejects one; that step is retried at the same "
+                      "τ with the iterated geometry, and so are the next K accepted steps ('corrected steps'). The "
+                      "lagged step keeps the growth rate of a small non-axisymmetric mode and is stable except in "
+                      "fast shape changes; the iterated one is stable there but damps that growth (doc/scheme.md, "
+                      "\"Implicit geometry\").");
+    prm.declare_entry("corrected steps",
+                      "20",
+                      Patterns::Integer(1, 100000),
+                      "K, 1 ≤ K ≤ 100000: with apply = after rejection, the number of accepted steps with the iterated "
+                      "geometry after a rejected lagged step, before the lagged step is tried again.");
     prm.declare_entry("tolerance",
                       "1e-3",
                       RealRange::closed(0, 1),
@@ -62,6 +76,8 @@ namespace FluidSurface
   {
     prm.enter_subsection("geometry iteration");
     max_iterations = prm.get_integer("maximum iterations");
+    apply           = prm.get("apply") == "always" ? Apply::always : Apply::after_rejection;
+    corrected_steps = prm.get_integer("corrected steps");
     tolerance      = prm.get_double("tolerance");
     const std::string relax = prm.get("relaxation");
     relaxation     = relax == "none" ? Relaxation::none : relax == "aitken" ? Relaxation::aitken : Relaxation::anderson;

@@ -221,9 +221,21 @@ namespace FluidSurface
     return tau * tau / (tau + normal_speed_step) * largest_difference / shape_radius;
   }
 
-  void
-  SurfaceStep::accept_error_history()
+  bool
+  SurfaceStep::iterate_geometry_after_rejection()
   {
+    if (!geometry_iteration.enabled() || geometry_iteration.apply != GeometryIteration::Apply::after_rejection ||
+        corrected_steps_left > 0)
+      return false;
+    corrected_steps_left = geometry_iteration.corrected_steps;
+    return true;
+  }
+
+  void
+  SurfaceStep::accept_history()
+  {
+    if (corrected_steps_left > 0)
+      --corrected_steps_left;
     if (!estimating_error)
       return;
     normal_speed.reinit(owned, relevant, geometry.get_communicator());
@@ -232,8 +244,10 @@ namespace FluidSurface
   }
 
   void
-  SurfaceStep::save_error_history(CheckpointData &data) const
+  SurfaceStep::save_history(CheckpointData &data) const
   {
+    if (corrected_steps_left > 0)
+      data.set("model/corrected steps left", corrected_steps_left);
     if (estimating_error && normal_speed_step > 0)
       {
         data.set("model/normal speed step", normal_speed_step);
@@ -242,9 +256,10 @@ namespace FluidSurface
   }
 
   void
-  SurfaceStep::load_error_history(const CheckpointData &data)
+  SurfaceStep::load_history(const CheckpointData &data)
   {
-    normal_speed_step = 0;
+    corrected_steps_left = data.has("model/corrected steps left") ? data.get_unsigned("model/corrected steps left") : 0;
+    normal_speed_step    = 0;
     if (estimating_error && data.has("model/normal speed step"))
       {
         VectorType w;
@@ -791,7 +806,7 @@ namespace FluidSurface
 
     // The implicit geometry: the same step assembled again on the surface of its own solution (in the frame of
     // the step, before the carry), until the nodes stop moving.
-    if (geometry_iteration.enabled() && request.prescribed_velocity() == nullptr && request.global_constraints)
+    if (iterating_geometry() && request.prescribed_velocity() == nullptr && request.global_constraints)
       {
         const double node_spacing =
           std::sqrt(old_measures.area / geometry.triangulation().n_global_active_cells()) / geometry.degree();

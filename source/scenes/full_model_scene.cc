@@ -109,7 +109,16 @@ namespace FluidSurface
               energy_control.decide(total_energy, candidate.total, tau);
             if (energy.verdict == EnergyStepController::Verdict::reject)
               {
-                retry_step(tau, energy.reason, "");
+                if (model.iterate_geometry_after_rejection())
+                  {
+                    model.restore_last_state();
+                    time.repeat_step();
+                    energy_control.forget_rejection();
+                    pcout << "    step rejected (" << energy.reason
+                          << "); retried at the same τ with the iterated geometry" << std::endl;
+                  }
+                else
+                  retry_step(tau, energy.reason, "");
                 continue;
               }
             accept_step(tau, step.error_estimate, candidate, energy);

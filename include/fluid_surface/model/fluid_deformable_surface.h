@@ -67,6 +67,13 @@ namespace FluidSurface
     /// Undoes the last advance() (geometry and fields).
     void
     restore_last_state();
+    /// After a rejected step: whether it was a lagged step that `geometry iteration/apply = after rejection`
+    /// retries, at the same τ, with the iterated geometry (SurfaceStep::iterate_geometry_after_rejection()).
+    bool
+    iterate_geometry_after_rejection()
+    {
+      return step.iterate_geometry_after_rejection();
+    }
 
     /**
      * Replaces the reference surface S₀ of the mesh law `reference` (set by setup() to the initial surface) by

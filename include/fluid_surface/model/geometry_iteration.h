@@ -44,6 +44,13 @@ namespace FluidSurface
       metric
     };
 
+    /// Which flow steps iterate their geometry.
+    enum class Apply
+    {
+      always,
+      after_rejection
+    };
+
     /// How the next iterate is taken from the last ones (FixedPointAcceleration).
     enum class Relaxation
     {
@@ -53,6 +60,8 @@ namespace FluidSurface
     };
 
     unsigned int max_iterations = 0;    ///< N_g: re-assemblies after the first solve; 0: the lagged scheme
+    Apply        apply          = Apply::always; ///< every flow step, or the K steps after a rejected lagged one
+    unsigned int corrected_steps = 20;  ///< K: accepted steps with iterated geometry after a rejection
     Implicit     implicit       = Implicit::all; ///< which geometric quantities come from the iterate
     Relaxation   relaxation     = Relaxation::anderson; ///< how the next iterate is formed
     double       time_level     = 1;    ///< θ: the re-assemblies are on S^{m+θ} = X^m + θ (Ỹ_k − X^m)

@@ -168,21 +168,35 @@ namespace FluidSurface
     {
       estimating_error = on;
     }
-    /// The candidate's normal speeds become the history of the error estimate (the caller accepted the step).
+    /// Whether the next flow step iterates its geometry (`geometry iteration/apply`: always, or in the K steps
+    /// after a rejected lagged step).
+    bool
+    iterating_geometry() const
+    {
+      return geometry_iteration.enabled() &&
+             (geometry_iteration.apply == GeometryIteration::Apply::always || corrected_steps_left > 0);
+    }
+    /// After a rejected step: with apply = after rejection and a lagged step rejected, the next K accepted steps
+    /// (and the retry) iterate their geometry. Returns whether the rejected step was such a lagged one.
+    bool
+    iterate_geometry_after_rejection();
+    /// The step was accepted: the candidate's normal speeds become the history of the error estimate, and one
+    /// corrected step of `apply = after rejection` is used up.
     void
-    accept_error_history();
+    accept_history();
     /// The next step has no error estimate (the state jumped: a re-parametrization).
     void
     forget_error_history()
     {
       normal_speed_step = 0;
     }
-    /// Writes the history of the error estimate into a checkpoint (nothing without one). Collective.
+    /// Writes the history of the error estimate (nothing without one) and the corrected steps left into a
+    /// checkpoint. Collective.
     void
-    save_error_history(CheckpointData &data) const;
-    /// Reads it, if the checkpoint has one and the error is estimated.
+    save_history(CheckpointData &data) const;
+    /// Reads them, if the checkpoint has them (and the error is estimated).
     void
-    load_error_history(const CheckpointData &data);
+    load_history(const CheckpointData &data);
     /// Sections "assembly", "factorization", "linear solve", "diagnostics" of advance() go to @p timer.
     void
     set_timer(dealii::TimerOutput &timer)
@@ -253,7 +267,7 @@ namespace FluidSurface
      * the normal speeds of the nodes relative to the carry, w = (Ỹ − X^m)·ñ^m/τ (@p old_normal: ñ^m), against
      * those of the last accepted step (w^m, of size τ_p): e = τ²/(τ + τ_p) max|w − w^m| / R, R = √(A/4π),
      * backward Euler's (τ²/2)|ẅ| of the shape's position over its size. The tangential motion (the mesh law)
-     * and the rigid motion (the carry, exact) do not enter. Stores w for accept_error_history(); −1 without a
+     * and the rigid motion (the carry, exact) do not enter. Stores w for accept_history(); −1 without a
      * last step.
      */
     double
@@ -317,6 +331,8 @@ namespace FluidSurface
     VectorType normal_speed, candidate_normal_speed;
     /// τ_p of the step that produced `normal_speed`; 0: none (the first step, after a re-parametrization).
     double normal_speed_step = 0;
+    /// `geometry iteration/apply = after rejection`: accepted steps with iterated geometry still to come.
+    unsigned int corrected_steps_left = 0;
     /// R = √(A^m/4π) of the last advance(): the length scale of the error estimate.
     double shape_radius = 1;
 

@@ -60,6 +60,14 @@ namespace FluidSurface
     Decision
     decide(const double old_energy, const double new_energy, const double tau);
 
+    /// The rejected step is retried with the same τ by another scheme: its rise is not evidence of a rise that
+    /// does not fall with τ (decide() compares the retry's rise rate with the rejected one's only after τ shrank).
+    void
+    forget_rejection()
+    {
+      previous_rate = 0;
+    }
+
     /// Appends the three summary lines (rises accepted, steps with rising energy, largest relative rise rate).
     void
     write_summary(std::ostream &out) const;

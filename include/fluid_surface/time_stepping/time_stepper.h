@@ -114,6 +114,15 @@ namespace FluidSurface
     void
     reject(const std::string &reason, const std::string &advice, const double factor = 0);
 
+    /// Counts a rejected step that is retried with the same τ by another scheme (`geometry iteration/apply =
+    /// after rejection`); τ and the run go on.
+    void
+    repeat_step()
+    {
+      ++n_rejected;
+      n_easy = 0;
+    }
+
     /// The state a checkpoint needs to continue bit for bit.
     struct State
     {
