@@ -78,6 +78,11 @@ namespace FluidSurface
     max_iterations = prm.get_integer("maximum iterations");
     apply           = prm.get("apply") == "always" ? Apply::always : Apply::after_rejection;
     corrected_steps = prm.get_integer("corrected steps");
+    if (apply == Apply::after_rejection && max_iterations == 0)
+      throw_invalid_entry("geometry iteration/apply",
+                          prm.get("apply"),
+                          "'always' with 'maximum iterations' = 0 (the lagged step has nothing to apply after a "
+                          "rejection; set 'maximum iterations' ≥ 1)");
     tolerance      = prm.get_double("tolerance");
     const std::string relax = prm.get("relaxation");
     relaxation     = relax == "none" ? Relaxation::none : relax == "aitken" ? Relaxation::aitken : Relaxation::anderson;
