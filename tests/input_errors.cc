@@ -1,6 +1,7 @@
 // Bad input ends a run before any computation with one message that names the file, the
 // line or entry, and what was expected: missing file, unknown subsection, unknown entry, a value
-// failing its pattern, a non-positive semi-axis, meshes with triangles or a boundary, and an
+// failing its pattern, a non-positive semi-axis, BDF2 without the geometry it needs or with a growth factor
+// beyond its zero-stability, meshes with triangles or a boundary, and an
 // output directory that holds another run.
 #include <deal.II/base/mpi.h>
 
@@ -50,6 +51,11 @@ main(int argc, char **argv)
   try_file("valve_below_floor.prm",
            "subsection model\n  set scene = full\nend\nsubsection mesh redistribution\n  set mesh quality floor = 0.2\n"
            "end\nsubsection reparametrization\n  set quality threshold = 0.1\nend\n");
+  try_file("bdf2_lagged.prm",
+           "subsection model\n  set scene = full\nend\nsubsection time stepping\n  set scheme = BDF2\nend\n");
+  try_file("bdf2_growth.prm",
+           "subsection model\n  set scene = full\nend\nsubsection time stepping\n  set scheme = BDF2\n"
+           "  set growth factor = 3\nend\nsubsection geometry iteration\n  set maximum iterations = 1\nend\n");
   try_file("missing_mesh.prm", "subsection geometry\n  set shape = mesh file\n  set mesh file = nowhere.msh\nend\n");
 
   // A mesh with a triangle, and an open surface (one quadrilateral).

@@ -256,9 +256,9 @@ namespace FluidSurface
   void
   FluidDeformableSurface::accept()
   {
+    step.accept_history(); // before the state moves on: BDF2 keeps it as x^{m−1}
     state.position = geometry.position();
     state.solution = step.candidate();
-    step.accept_history();
   }
 
   void
@@ -331,4 +331,17 @@ namespace FluidSurface
     step.load_history(data);
     geometry.compute_curvature();
   }
+  void
+  FluidDeformableSurface::set_bdf2(const bool on)
+  {
+    const GeometryIteration &iteration = step.geometry_iteration;
+    if (on && !(iteration.enabled() && iteration.apply == GeometryIteration::Apply::always &&
+                iteration.time_level == 1))
+      throw_invalid_entry("time stepping/scheme",
+                          "BDF2",
+                          "'backward Euler', or 'geometry iteration/maximum iterations' ≥ 1 with apply = always and "
+                          "time level = 1 (BDF2 needs the geometry of t + τ; a lagged geometry is first order)");
+    step.set_bdf2(on);
+  }
+
 } // namespace FluidSurface

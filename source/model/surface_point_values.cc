@@ -23,11 +23,12 @@ namespace FluidSurface
                              const Tensor<1, 3>   &smooth_normal,
                              const Tensor<2, 3>   &smooth_normal_gradient,
                              const Tensor<1, 3>   &old_velocity,
+                             const Tensor<1, 3>   &transport_velocity,
                              const Tensor<2, 3>   &old_velocity_gradient)
   {
     flow.reinit(fe_values, q);
     flow.old_velocity          = old_velocity;
-    flow.transport_velocity    = old_velocity;
+    flow.transport_velocity    = transport_velocity;
     flow.old_velocity_gradient = old_velocity_gradient;
     this->smooth_normal        = smooth_normal;
     // The lagged shape operator B = −P∇ñ and c = |B|² − ½H² (vanishes on spheres).

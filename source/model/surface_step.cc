@@ -236,6 +236,12 @@ namespace FluidSurface
   {
     if (corrected_steps_left > 0)
       --corrected_steps_left;
+    if (bdf2)
+      {
+        previous_solution.reinit(owned, relevant, geometry.get_communicator());
+        previous_solution = state.solution;
+        previous_step     = last_tau;
+      }
     if (!estimating_error)
       return;
     normal_speed.reinit(owned, relevant, geometry.get_communicator());
@@ -248,6 +254,11 @@ namespace FluidSurface
   {
     if (corrected_steps_left > 0)
       data.set("model/corrected steps left", corrected_steps_left);
+    if (bdf2 && previous_step > 0)
+      {
+        data.set("model/previous step", previous_step);
+        data.set_fields("previous state", dofs, {&previous_solution});
+      }
     if (estimating_error && normal_speed_step > 0)
       {
         data.set("model/normal speed step", normal_speed_step);
@@ -260,6 +271,15 @@ namespace FluidSurface
   {
     corrected_steps_left = data.has("model/corrected steps left") ? data.get_unsigned("model/corrected steps left") : 0;
     normal_speed_step    = 0;
+    previous_step        = 0;
+    if (bdf2 && data.has("model/previous step"))
+      {
+        VectorType x;
+        data.get_fields("previous state", dofs, {&x});
+        previous_solution.reinit(owned, relevant, geometry.get_communicator());
+        previous_solution = x;
+        previous_step     = data.get_double("model/previous step");
+      }
     if (estimating_error && data.has("model/normal speed step"))
       {
         VectorType w;
@@ -304,6 +324,57 @@ namespace FluidSurface
     for (const auto &pair : position_pairs)
       flow_vector[pair.first] = x[pair.second];
     flow_vector.compress(VectorOperation::insert);
+  }
+
+  void
+  SurfaceStep::prepare_bdf2_start(const RigidMotion &carried, const bool carried_frame, const double tau)
+  {
+    // x̃^{m−1}: the previous state in the frame of the step (law reference: frame coordinates at t^m − τ_p,
+    // i.e. carried forward by τ_p; otherwise the previous state itself).
+    VectorType previous(owned, geometry.get_communicator());
+    previous = previous_solution;
+    if (carried_frame)
+      {
+        const Tensor<2, 3> Q = carried.rotation_over(previous_step);
+        for (const auto &node : velocity_nodes)
+          {
+            Tensor<1, 3> u;
+            for (unsigned int d = 0; d < 3; ++d)
+              u[d] = previous[node[d]];
+            u = Q * u;
+            for (unsigned int d = 0; d < 3; ++d)
+              previous[node[d]] = u[d];
+          }
+        for (const auto &node : new_position_nodes)
+          {
+            Point<3> y;
+            for (unsigned int d = 0; d < 3; ++d)
+              y[d] = previous[node[d]];
+            y = carried.carry(y, previous_step);
+            for (unsigned int d = 0; d < 3; ++d)
+              previous[node[d]] = y[d];
+          }
+        previous.compress(VectorOperation::insert);
+      }
+    // Variable-step BDF2, ω = τ/τ_p: (α₀x − (1+ω)x^m + ω²/(1+ω)x^{m−1})/τ = f, α₀ = (1+2ω)/(1+ω), written as the
+    // backward-Euler step (x − x̂)/(τ/α₀) = f from x̂ = ((1+ω)x^m − ω²/(1+ω)x^{m−1})/α₀; the lagged coefficient
+    // (the gradient of the convection) from the extrapolation u* = (1+ω)u^m − ωu^{m−1}.
+    const double omega = tau / previous_step, alpha0 = (1 + 2 * omega) / (1 + omega);
+    VectorType   start(owned, geometry.get_communicator()), lagged(owned, geometry.get_communicator());
+    start = state.solution;
+    lagged = start;
+    start.sadd((1 + omega) / alpha0, -omega * omega / ((1 + omega) * alpha0), previous);
+    lagged.sadd(1 + omega, -omega, previous);
+    start_fields.reinit(owned, relevant, geometry.get_communicator());
+    lagged_fields.reinit(owned, relevant, geometry.get_communicator());
+    start_fields  = start;
+    lagged_fields = lagged;
+    VectorType start_x(geometry.locally_owned_dofs(), geometry.get_communicator());
+    for (const auto &pair : position_pairs)
+      start_x[pair.second] = start[pair.first];
+    start_x.compress(VectorOperation::insert);
+    start_position.reinit(geometry.locally_owned_dofs(), geometry.locally_relevant_dofs(), geometry.get_communicator());
+    start_position = start_x;
   }
 
   void
@@ -379,6 +450,7 @@ namespace FluidSurface
       , smooth_normal(gauss.size())
       , smooth_normal_gradient(gauss.size())
       , old_velocity(gauss.size())
+      , transport_velocity(gauss.size())
       , old_velocity_gradient(gauss.size())
       , nodal_smooth_normal(nodal.size())
       , old_position(gauss.size())
@@ -399,6 +471,7 @@ namespace FluidSurface
     std::vector<Tensor<1, 3>> smooth_normal;          ///< ñ^m at the Gauss points
     std::vector<Tensor<2, 3>> smooth_normal_gradient; ///< ∇ñ^m
     std::vector<Tensor<1, 3>> old_velocity;           ///< u^m
+    std::vector<Tensor<1, 3>> transport_velocity;     ///< w of the convection (u^m, or BDF2's u*)
     std::vector<Tensor<2, 3>> old_velocity_gradient;  ///< G^m
     std::vector<Tensor<1, 3>> nodal_smooth_normal;    ///< ñ^m at the nodal points
     std::vector<Tensor<1, 3>> old_position;           ///< X^m at the Gauss points
@@ -505,8 +578,12 @@ namespace FluidSurface
     const VectorType &normal = assembly_normal != nullptr ? *assembly_normal : geometry.normal_field();
     scratch.geometry[vector].get_function_values(normal, scratch.smooth_normal);
     scratch.geometry[vector].get_function_gradients(normal, scratch.smooth_normal_gradient);
-    scratch.flow[vector].get_function_values(state.solution, scratch.old_velocity);
-    scratch.flow[vector].get_function_gradients(state.solution, scratch.old_velocity_gradient);
+    scratch.flow[vector].get_function_values(*old_fields, scratch.old_velocity);
+    if (lagged_field != old_fields)
+      scratch.flow[vector].get_function_values(*lagged_field, scratch.transport_velocity);
+    else
+      scratch.transport_velocity = scratch.old_velocity;
+    scratch.flow[vector].get_function_gradients(*lagged_field, scratch.old_velocity_gradient);
     scratch.geometry[vector].get_function_values(*old_position, scratch.old_position);
     if (reference_law)
       scratch.flow[FEValuesExtractors::Vector(DofLayout::new_position_component)].get_function_gradients(
@@ -519,6 +596,7 @@ namespace FluidSurface
                      scratch.smooth_normal[q],
                      scratch.smooth_normal_gradient[q],
                      scratch.old_velocity[q],
+                     scratch.transport_velocity[q],
                      scratch.old_velocity_gradient[q]);
         assemble_flow_terms(point, Point<3>(scratch.old_position[q]), tau, area_rate, carried, local);
         if (request.prescribed_velocity() == nullptr)
@@ -562,8 +640,12 @@ namespace FluidSurface
         if (reference_law)
           {
             // In the carried frame: Ỹ·ñ = X^m·ñ + τ(ũ − R)·ñ, damped towards X^m.
-            redistribution.assemble_kinematics(
-              nodal, *layout, tau, x - tau * carried.value(x), local.matrix, local.rhs);
+            redistribution.assemble_kinematics(nodal,
+                                               *layout,
+                                               tau,
+                                               x - tau * carried.value(frame_velocity_on_new_surface ? nodal.position : x),
+                                               local.matrix,
+                                               local.rhs);
             redistribution.assemble_nodal_terms(nodal, *layout, tau, x, local.matrix, local.rhs);
             // The nodal rule's points are the nodes: the node whose shape function is 1 here.
             for (unsigned int n = 0; n < layout->new_position_nodes.size(); ++n)
@@ -624,7 +706,8 @@ namespace FluidSurface
     // position relative to the carry; advance() maps back): the frame's rotation adds (Ω × ũ, v), and the mesh
     // velocity in the convection is R + (Ỹ − X^m)/τ, i.e. W = X^m − τR.
     const bool     carried_frame = request.law == MeshRedistribution::Law::reference;
-    const Point<3> start         = carried_frame ? old_point - tau * carried.value(old_point) : old_point;
+    const Point<3> frame_point   = frame_velocity_on_new_surface ? p.position : old_point;
+    const Point<3> start         = carried_frame ? old_point - tau * carried.value(frame_point) : old_point;
     for (const unsigned int i : layout->velocity)
       {
         if (flow.inertia)
@@ -675,7 +758,10 @@ namespace FluidSurface
     request = step_request;
     Result result;
     // X^m: the accepted state's surface; the valve's solves move the geometry itself between them.
-    old_position = request.velocity == StepRequest::Velocity::flow ? &state.position : &geometry.position();
+    old_position  = request.velocity == StepRequest::Velocity::flow ? &state.position : &geometry.position();
+    old_fields    = &state.solution;
+    frame_velocity_on_new_surface = false;
+    lagged_field  = &state.solution;
     // The momenta of u^m and the rigid motion of the shape, once per step (the mesh damping target and the
     // constant parts of the momentum constraints).
     const bool need_motion =
@@ -686,12 +772,26 @@ namespace FluidSurface
     // Law reference solves the step in the frame carried by the rigid motion of the shape (assemble_cell()).
     const bool carried_frame = request.law == MeshRedistribution::Law::reference &&
                                redistribution.follow_rigid_motion;
+    // BDF2 (after a first backward-Euler step): the backward-Euler form of size τ/α₀ from x̂ (prepare_bdf2_start()).
+    const bool bdf2_step = bdf2 && previous_step > 0 && request.velocity == StepRequest::Velocity::flow &&
+                           request.global_constraints;
+    double     tau_solve = tau;
+    if (bdf2_step)
+      {
+        prepare_bdf2_start(motion, carried_frame, tau);
+        const double omega = tau / previous_step;
+        tau_solve          = tau * (1 + omega) / (1 + 2 * omega);
+        old_position       = &start_position;
+        frame_velocity_on_new_surface = true;
+        old_fields         = &start_fields;
+        lagged_field       = &lagged_fields;
+      }
     const SurfaceGeometry::Measures old_measures = geometry.measure();
     shape_radius                                 = std::sqrt(old_measures.area / (4 * numbers::PI));
     const VectorType                old_normal(geometry.normal_field()); // ñ^m (the geometry may be iterated)
     {
       TimerSection section(step_timer, "assembly");
-      assemble(tau, motion, old_measures);
+      assemble(tau_solve, motion, old_measures);
     }
 
     // Bordering: the global constraints c_k·x = g_k with multipliers μ_k (force μ_k c_k in the
@@ -706,7 +806,7 @@ namespace FluidSurface
       {
         columns.push_back(&volume_column);
         rows.push_back(&volume_column);
-        rates.push_back(-(old_measures.volume - state.target_volume) / drift_time(tau));
+        rates.push_back(-(old_measures.volume - state.target_volume) / drift_time(tau_solve));
       }
     // The momentum targets in the frame of the step (the constant parts of the rows are added by set_rates()).
     std::array<double, 6> targets = {{0, 0, 0, 0, 0, 0}};
@@ -843,7 +943,7 @@ namespace FluidSurface
                 }
               else if (implicit == Implicit::metric)
                 assembly_normal = &old_normal;
-              assemble(tau, motion, old_measures);
+              assemble(tau_solve, motion, old_measures);
               assembly_normal = nullptr;
               if (rigid_rows_on && flow.inertia && implicit != Implicit::normal)
                 set_rates(rigid_motion(state.solution).momenta);

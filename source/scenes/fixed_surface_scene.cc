@@ -284,7 +284,10 @@ namespace FluidSurface
                                     "time stepping/growth factor",
                                     "time stepping/shrink factor",
                                     "time stepping/easy steps before growth",
-                                    "time stepping/energy tolerance"},
+                                    "time stepping/energy tolerance",
+                                    "time stepping/error tolerance",
+                                    "time stepping/scheme",
+                                    "geometry iteration/*"},
                                    "fixed surface");
     prm.enter_subsection("fixed surface");
     const std::string name = prm.get("problem");

@@ -36,6 +36,7 @@ namespace FluidSurface
     energy_control = EnergyStepController(time.energy_tolerance());
     model.parse_parameters(prm, time.maximum_step_size());
     model.set_error_estimation(time.error_control());
+    model.set_bdf2(time.bdf2());
     diagnostics.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
     steady_state.parse_parameters(prm);

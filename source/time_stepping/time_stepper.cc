@@ -60,12 +60,20 @@ namespace FluidSurface
     prm.declare_entry("error tolerance",
                       "0",
                       RealRange::closed(0, 1),
-                      "ε_t, 0 ≤ ε_t ≤ 1: with ε_t > 0, τ follows a local error estimate e of the step (the velocity "
-                      "at the nodes against its extrapolation from the two steps before, relative to max |u| and to 1; "
-                      "doc/scheme.md): a step with e > ε_t is rejected and retried with τ·max(0.2, 0.9 (ε_t/e)^½), an "
+                      "ε_t, 0 ≤ ε_t ≤ 1: with ε_t > 0, τ follows a local error estimate e of the step (e = τ²/(τ + "
+                      "τ_p) max|w − w^m|/R: the change of the nodes' normal speed w relative to the rigid carry since "
+                      "the last step, over the shape's radius R = √(A/4π); doc/scheme.md): a step with e > ε_t is rejected and retried with τ·max(0.2, 0.9 (ε_t/e)^½), an "
                       "accepted one proposes τ·min(2, 0.9 (ε_t/e)^½) for the next, within [τ_min, τ_max]; 'growth "
                       "factor' and 'easy steps before growth' are then not used. The energy check stays on as a guard. "
                       "0: the step grows by 'growth factor' after easy steps.");
+    prm.declare_entry("scheme",
+                      "backward Euler",
+                      Patterns::Selection("backward Euler|BDF2"),
+                      "The time discretization of the flow steps. backward Euler: first order. BDF2: variable-step "
+                      "BDF2 (second order, L-stable; ω = τ/τ_p ≤ 2 by the controllers), u* = (1+ω)u^m − ωu^{m−1} "
+                      "in the lagged convection; the first step and the first after a re-parametrization are "
+                      "backward Euler. Needs 'geometry iteration/maximum iterations' ≥ 1, apply = always and time "
+                      "level = 1 (a lagged geometry is first order; doc/scheme.md, \"Second order in time\").");
     prm.declare_entry("energy tolerance",
                       "1e-3",
                       RealRange::at_least(0),
@@ -89,10 +97,15 @@ namespace FluidSurface
     easy_steps                = prm.get_integer("easy steps before growth");
     relative_energy_tolerance = prm.get_double("energy tolerance");
     error_tolerance           = prm.get_double("error tolerance");
+    bdf2_scheme               = prm.get("scheme") == "BDF2";
     if (error_tolerance > 0 && !adaptive)
       throw_invalid_entry("time stepping/error tolerance",
                           prm.get("error tolerance"),
                           "0 with adaptive = false (a fixed step has nothing to adapt)");
+    if (bdf2_scheme && growth > 2)
+      throw_invalid_entry("time stepping/growth factor",
+                          prm.get("growth factor"),
+                          "a factor ≤ 2 with scheme = BDF2 (variable-step BDF2 is zero-stable for τ/τ_p < 1 + √2)");
     if (end_time > 0 && end_time < tau_min)
       throw_invalid_entry("time stepping/end time",
                           prm.get("end time"),

@@ -146,6 +146,12 @@ namespace FluidSurface
     {
       step.set_error_estimation(on);
     }
+    /**
+     * Makes the flow steps BDF2 steps (`time stepping/scheme = BDF2`, SurfaceStep::set_bdf2()); an input error
+     * unless every flow step iterates its geometry to the new time level (a lagged geometry is first order).
+     */
+    void
+    set_bdf2(const bool on);
     /// Whether ∂_t u is assembled (false: the Stokes limit, whose energy F is the bending energy alone).
     bool
     has_inertia() const

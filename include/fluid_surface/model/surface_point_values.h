@@ -22,8 +22,9 @@ namespace FluidSurface
 
     /**
      * Evaluates point @p q of @p fe_values (the flow element on S^m), with the continuous normal ñ^m, its
-     * gradient ∇ñ^m, and the old velocity u^m and its gradient G^m at the point. u^m is also the transport
-     * velocity of the convection.
+     * gradient ∇ñ^m, the old velocity u^m of the inertia, the transport velocity w of the convection and the
+     * lagged gradient G^m at the point (backward Euler: w = u^m and G^m = ∇u^m; BDF2: û of the step's start and
+     * w, G from the extrapolation u*).
      */
     void
     reinit(const dealii::FEValues<2, 3> &fe_values,
@@ -31,6 +32,7 @@ namespace FluidSurface
            const dealii::Tensor<1, 3>   &smooth_normal,
            const dealii::Tensor<2, 3>   &smooth_normal_gradient,
            const dealii::Tensor<1, 3>   &old_velocity,
+           const dealii::Tensor<1, 3>   &transport_velocity,
            const dealii::Tensor<2, 3>   &old_velocity_gradient);
 
     FlowPointValues flow; ///< x, JxW, ν, u^m, G^m and the velocity and pressure shape functions

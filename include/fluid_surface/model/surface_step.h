@@ -168,6 +168,15 @@ namespace FluidSurface
     {
       estimating_error = on;
     }
+    /**
+     * Whether the flow steps are variable-step BDF2 steps (`time stepping/scheme = BDF2`) after a first
+     * backward-Euler step (and after each re-parametrization); the history x^{m−1}, τ_p is kept in checkpoints.
+     */
+    void
+    set_bdf2(const bool on)
+    {
+      bdf2 = on;
+    }
     /// Whether the next flow step iterates its geometry (`geometry iteration/apply`: always, or in the K steps
     /// after a rejected lagged step).
     bool
@@ -184,11 +193,12 @@ namespace FluidSurface
     /// corrected step of `apply = after rejection` is used up.
     void
     accept_history();
-    /// The next step has no error estimate (the state jumped: a re-parametrization).
+    /// The next step has no error estimate and is a backward-Euler step (the state jumped: a re-parametrization).
     void
     forget_error_history()
     {
       normal_speed_step = 0;
+      previous_step     = 0;
     }
     /// Writes the history of the error estimate (nothing without one) and the corrected steps left into a
     /// checkpoint. Collective.
@@ -281,6 +291,14 @@ namespace FluidSurface
     /// The geometry's position back to X^m (its curvature and normal are not recomputed).
     void
     restore_old_geometry();
+    /**
+     * BDF2: the start x̂ of the step's backward-Euler form (start_fields: û and X̂ in the Y components;
+     * start_position: X̂) and the extrapolated u* whose gradient the convection lags (lagged_fields), from the
+     * state x^m and previous_solution x^{m−1} (law reference: the latter carried into the frame of the step by
+     * @p carried). @p tau: the step.
+     */
+    void
+    prepare_bdf2_start(const RigidMotion &carried, const bool carried_frame, const double tau);
     /// Law reference: maps the solution of a step in the carried frame back (u = Qũ, Y = the carry of Ỹ).
     void
     leave_carried_frame(const RigidMotion &carried, const double tau, VectorType &solution) const;
@@ -324,6 +342,22 @@ namespace FluidSurface
     const VectorType *assembly_normal = nullptr;
     /// τ of the last advance().
     double last_tau = 0;
+    /// The fields whose u is u^m of the inertia (the state's, or BDF2's û), and X^m's Y components.
+    const VectorType *old_fields = nullptr;
+    /// The fields whose velocity gradient the convection lags (the state's, or BDF2's u*).
+    const VectorType *lagged_field = nullptr;
+    /**
+     * Law reference: whether the frame velocity R in the mesh velocity and the kinematics is taken on the
+     * surface the step is assembled on (BDF2 steps: at the new time level, for second order) instead of at X^m.
+     */
+    bool frame_velocity_on_new_surface = false;
+    /// Whether the flow steps are BDF2 steps (set_bdf2()).
+    bool bdf2 = false;
+    /// BDF2: the state x^{m−1} before the last accepted step (flow numbering, ghosted) and that step τ_p; 0: none.
+    VectorType previous_solution;
+    double     previous_step = 0;
+    /// BDF2: x̂ and u* of the step under way (prepare_bdf2_start()), ghosted; X̂ in the geometry numbering.
+    VectorType start_fields, lagged_fields, start_position;
     /// Whether advance() estimates the error of flow steps (estimate_error()).
     bool estimating_error = false;
     /// The normal speeds w of the nodes in the last accepted step and in the candidate step (estimate_error();

@@ -90,6 +90,12 @@ namespace FluidSurface
     {
       return error_tolerance > 0;
     }
+    /// Whether the flow steps are BDF2 steps (`scheme = BDF2`) instead of backward Euler.
+    bool
+    bdf2() const
+    {
+      return bdf2_scheme;
+    }
     /// ε_t of `error tolerance`.
     double
     error_bound() const
@@ -165,6 +171,7 @@ namespace FluidSurface
     unsigned int easy_steps;
     double       relative_energy_tolerance;
     double       error_tolerance = 0; ///< ε_t; 0: no error control
+    bool         bdf2_scheme = false; ///< `scheme = BDF2`
     bool         adaptive;
 
     double       current_time = 0;
