@@ -28,7 +28,8 @@ mkdir -p "$work" $here/cases
 # lagged: one solve on S^m. aitken, anderson: the implicit geometry with that relaxation. normal, metric: only ñ (with
 # c) or only the metric from the iterate (which lagged quantity sets the limit), Anderson's mixing. all1, normal1:
 # one re-assembly whatever its change (tolerance 0: a predictor–corrector step of two solves); mid1: all1 on the
-# midpoint surface (time level ½); metric1: one re-assembly with only the metric from the predicted surface.
+# midpoint surface (time level ½); metric1: one re-assembly with only the metric from the predicted surface; bdf2:
+# all1 with time stepping/scheme = BDF2 (second order).
 scheme_lines() {
   iterate() { printf 'subsection geometry iteration\n  set maximum iterations = %s\n  set tolerance = %s\n  set relaxation = %s\n  set implicit = %s\n  set time level = %s\nend\n' "$1" "$2" "$3" "$4" "${5:-1}"; }
   case $1 in
@@ -40,6 +41,7 @@ scheme_lines() {
     normal1) iterate 1 0 anderson normal ;;
     mid1) iterate 1 0 anderson all 0.5 ;;
     metric1) iterate 1 0 anderson metric ;;
+    bdf2) iterate 1 0 anderson all; printf 'subsection time stepping\n  set scheme = BDF2\nend\n' ;;
   esac
 }
 

@@ -3,27 +3,13 @@ folder and the end time: the variant names; `reference` among them). One CSV row
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "phase3"))
-import statistics_columns  # noqa: E402
+from run_records import interpolate, statistics_columns, summary as read_summary
 
 work, end, variants = sys.argv[1], float(sys.argv[2]), sys.argv[3:]
 
 
 def summary(name):
-    values = {}
-    for line in open(os.path.join(work, name, "summary")):
-        if ": " in line:
-            key, value = line.split(": ", 1)
-            values[key.strip()] = value.strip()
-    return values
-
-
-def interpolate(t, y, s):
-    for i in range(1, len(t)):
-        if t[i] >= s:
-            w = (s - t[i - 1]) / (t[i] - t[i - 1])
-            return (1 - w) * y[i - 1] + w * y[i]
-    return None
+    return read_summary(os.path.join(work, name))
 
 
 grid = [0.25 * k for k in range(1, int(round(end / 0.25)) + 1)]

@@ -13,13 +13,14 @@ here=benchmarks/work_precision
 exe=${EXE:-$PWD/build/fluid_surface}
 work=${WORK:-$PWD/$here/work}
 end=7
-variants=${VARIANTS:-"reference lagged_0.1 lagged_0.05 lagged_0.025 lagged_0.0125 lagged_0.05_e1e-4 normal1_0.05 normal1_0.025 normal1_0.0125 all1_0.05 all1_0.025"}
+variants=${VARIANTS:-"reference lagged_0.1 lagged_0.05 lagged_0.025 lagged_0.0125 lagged_0.05_e1e-4 normal1_0.05 normal1_0.025 normal1_0.0125 all1_0.05 all1_0.025 after1_0.05 after1_0.025 bdf2_0.1 bdf2_0.05 bdf2_0.025"}
 if [ "${1:-}" = "--quick" ]; then variants="reference lagged_0.05 normal1_0.05"; end=1; work=$work/quick; fi
 mkdir -p "$work" $here/runs
 
 # <scheme>_<τ_max>[_e<energy tolerance>]; reference: lagged, τ_max = 2.5e-3, energy tolerance 1e-4. Schemes: lagged;
 # normal1, all1: the predictor–corrector step (one re-assembly with ñ and c, or all geometry, of the predicted
-# surface); after1: lagged until the energy check rejects a step, then all1 for the retry and the next 20 steps.
+# surface); after1: lagged until the energy check rejects a step, then all1 for the retry and the next 20 steps;
+# bdf2: all1 with time stepping/scheme = BDF2 (second order).
 variant_lines() {
   local v=$1 scheme tau energy=1e-3
   [ $v = reference ] && v=lagged_0.0025_e1e-4
@@ -31,6 +32,7 @@ variant_lines() {
     lagged) printf 'subsection geometry iteration\n  set maximum iterations = 0\nend\n' ;;
     normal1|all1) printf 'subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n  set implicit = %s\nend\n' ${scheme%1} ;;
     after1) printf 'subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n  set apply = after rejection\nend\n' ;;
+    bdf2) printf 'subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n  set apply = always\nend\nsubsection time stepping\n  set scheme = BDF2\nend\n' ;;
   esac
 }
 
