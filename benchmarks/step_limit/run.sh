@@ -31,7 +31,7 @@ mkdir -p "$work" $here/cases
 # midpoint surface (time level ½); metric1: one re-assembly with only the metric from the predicted surface; bdf2:
 # all1 with time stepping/scheme = BDF2 (second order).
 scheme_lines() {
-  iterate() { printf 'subsection geometry iteration\n  set maximum iterations = %s\n  set tolerance = %s\n  set relaxation = %s\n  set implicit = %s\n  set time level = %s\nend\n' "$1" "$2" "$3" "$4" "${5:-1}"; }
+  iterate() { printf 'subsection geometry iteration\n  set maximum iterations = %s\n  set tolerance = %s\n  set relaxation = %s\n  set implicit = %s\n  set time level = %s\n  set apply = always\nend\n' "$1" "$2" "$3" "$4" "${5:-1}"; }
   case $1 in
     lagged) printf 'subsection geometry iteration\n  set maximum iterations = 0\nend\n' ;;
     aitken) iterate $iterations 1e-3 aitken all ;;
