@@ -1,11 +1,11 @@
-"""benchmarks/work_precision: errors of each variant against the reference run (first argument after the work
-folder and the end time: the variant names; `reference` among them). One CSV row per variant."""
+"""benchmarks/work_precision: errors of each variant against the reference run. Arguments: the work folder, the
+end time, the reference's variant name, the variant names (the reference among them). One CSV row per variant."""
 import os
 import sys
 
 from run_records import interpolate, statistics_columns, summary as read_summary
 
-work, end, variants = sys.argv[1], float(sys.argv[2]), sys.argv[3:]
+work, end, reference_name, variants = sys.argv[1], float(sys.argv[2]), sys.argv[3], sys.argv[4:]
 
 
 def summary(name):
@@ -13,8 +13,8 @@ def summary(name):
 
 
 grid = [0.25 * k for k in range(1, int(round(end / 0.25)) + 1)]
-reference = statistics_columns.read(os.path.join(work, "reference", "statistics"))
-ref_sum = summary("reference")
+reference = statistics_columns.read(os.path.join(work, reference_name, "statistics"))
+ref_sum = summary(reference_name)
 try:
     ref_tsym = float(ref_sum.get("t_sym_1e-2", "nan"))
 except ValueError:

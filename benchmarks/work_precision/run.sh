@@ -1,36 +1,41 @@
 #!/usr/bin/env bash
 # benchmarks/work_precision: run time against error of the full model, prm/oblate.prm at refinement 3 to t = 7.
 # Each variant (a time-step setting of a scheme) runs once; its errors in F(t), ω(t) and e(λ)(t) on the grid
-# t = 0.25, 0.5, …, 7 and in t_sym_1e-2 are measured against a reference run of the lagged step with
-# τ_max = 2.5e-3 and energy tolerance 1e-4 (same mesh, so only the time discretization is measured).
+# t = 0.25, 0.5, …, 7 and in t_sym_1e-2 are measured against a reference run (REFERENCE, default bdf2_0.0025: BDF2
+# with τ_max = τ₀ = 2.5e-3; same mesh, so only the time discretization is measured). `reference` is the earlier
+# reference, the lagged step with τ_max = 2.5e-3 and energy tolerance 1e-4.
 #   benchmarks/work_precision/run.sh [--quick]      from the repository root, after building
 # A completed run whose prm is unchanged is kept (FORCE=1: run it again).
 # Environment: VARIANTS (names below), WORK (default benchmarks/work_precision/work, not committed), EXE.
-# Rows to runs/<variant>.csv, results.csv collects them with the errors; plot.py draws work_precision.png.
+# results.csv holds the errors of every variant; plot.py draws work_precision.png (--quick: both in the work folder).
 set -u
 cd "$(dirname "$0")/../.."
 here=benchmarks/work_precision
 exe=${EXE:-$PWD/build/fluid_surface}
 work=${WORK:-$PWD/$here/work}
 end=7
-variants=${VARIANTS:-"reference lagged_0.1 lagged_0.05 lagged_0.025 lagged_0.0125 lagged_0.05_e1e-4 normal1_0.05 normal1_0.025 normal1_0.0125 all1_0.05 all1_0.025 after1_0.05 after1_0.025 bdf2_0.1 bdf2_0.05 bdf2_0.025"}
-if [ "${1:-}" = "--quick" ]; then variants="reference lagged_0.05 normal1_0.05"; end=1; work=$work/quick; fi
-mkdir -p "$work" $here/runs
+reference=${REFERENCE:-bdf2_0.0025}
+variants=${VARIANTS:-"bdf2_0.0025 reference lagged_0.1 lagged_0.05 lagged_0.025 lagged_0.0125 lagged_0.05_e1e-4 normal1_0.05 normal1_0.025 normal1_0.0125 all1_0.05 all1_0.025 after1_0.05 after1_0.025 bdf2_0.1 bdf2_0.05 bdf2_0.025 lagged_0.05_s0.0025 bdf2_0.05_s0.0025 after1_0.05_s0.0025"}
+out=$here
+if [ "${1:-}" = "--quick" ]; then reference=bdf2_0.005; variants="bdf2_0.005 lagged_0.05 bdf2_0.05"; end=1; work=$work/quick; out=$work; fi
+mkdir -p "$work"
 
-# <scheme>_<τ_max>[_e<energy tolerance>]; reference: lagged, τ_max = 2.5e-3, energy tolerance 1e-4. Schemes: lagged;
+# <scheme>_<τ_max>[_e<energy tolerance>][_s<τ₀>] (τ₀ = min(τ_max, 0.01) unless named); reference: lagged, τ_max = 2.5e-3, energy tolerance 1e-4. Schemes: lagged;
 # normal1, all1: the predictor–corrector step (one re-assembly with ñ and c, or all geometry, of the predicted
 # surface); after1: lagged until the energy check rejects a step, then all1 for the retry and the next 20 steps;
 # bdf2: all1 with time stepping/scheme = BDF2 (second order).
 variant_lines() {
-  local v=$1 scheme tau energy=1e-3
+  local v=$1 scheme tau energy=1e-3 start
   [ $v = reference ] && v=lagged_0.0025_e1e-4
   scheme=${v%%_*}; tau=${v#*_}; tau=${tau%%_*}
-  case $v in *_e*) energy=${v##*_e};; esac
+  start=$(awk -v t=$tau 'BEGIN { print (t < 0.01 ? t : 0.01) }')
+  case $v in *_e*) energy=${v##*_e}; energy=${energy%%_*};; esac
+  case $v in *_s*) start=${v##*_s}; start=${start%%_*};; esac
   printf 'subsection time stepping\n  set time step = %s\n  set maximum time step = %s\n  set energy tolerance = %s\nend\n' \
-    $(awk -v t=$tau 'BEGIN { print (t < 0.01 ? t : 0.01) }') $tau $energy
+    $start $tau $energy
   case $scheme in
-    lagged) printf 'subsection geometry iteration\n  set maximum iterations = 0\nend\n' ;;
-    normal1|all1) printf 'subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n  set implicit = %s\nend\n' ${scheme%1} ;;
+    lagged) printf 'subsection geometry iteration\n  set maximum iterations = 0\n  set apply = always\nend\n' ;;
+    normal1|all1) printf 'subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n  set implicit = %s\n  set apply = always\nend\n' ${scheme%1} ;;
     after1) printf 'subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n  set apply = after rejection\nend\n' ;;
     bdf2) printf 'subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n  set apply = always\nend\nsubsection time stepping\n  set scheme = BDF2\nend\n' ;;
   esac
@@ -64,6 +69,6 @@ PRM
     echo "$v exit $?"
   )
 done
-/usr/bin/python3 $here/errors.py "$work" $end $variants > $here/results.csv
-/usr/bin/python3 $here/plot.py $here/results.csv $here/work_precision.png
-cat $here/results.csv
+/usr/bin/python3 $here/errors.py "$work" $end $reference $variants > $out/results.csv
+/usr/bin/python3 $here/plot.py $out/results.csv $out/work_precision.png $reference
+cat $out/results.csv
