@@ -334,31 +334,10 @@ namespace FluidSurface
     VectorType previous(owned, geometry.get_communicator());
     previous = previous_solution;
     if (carried_frame)
-      {
-        const Tensor<2, 3> Q = carried.rotation_over(previous_step);
-        for (const auto &node : velocity_nodes)
-          {
-            Tensor<1, 3> u;
-            for (unsigned int d = 0; d < 3; ++d)
-              u[d] = previous[node[d]];
-            u = Q * u;
-            for (unsigned int d = 0; d < 3; ++d)
-              previous[node[d]] = u[d];
-          }
-        for (const auto &node : new_position_nodes)
-          {
-            Point<3> y;
-            for (unsigned int d = 0; d < 3; ++d)
-              y[d] = previous[node[d]];
-            y = carried.carry(y, previous_step);
-            for (unsigned int d = 0; d < 3; ++d)
-              previous[node[d]] = y[d];
-          }
-        previous.compress(VectorOperation::insert);
-      }
+      carry_fields(carried, previous_step, previous);
     // Variable-step BDF2, ω = τ/τ_p: (α₀x − (1+ω)x^m + ω²/(1+ω)x^{m−1})/τ = f, α₀ = (1+2ω)/(1+ω), written as the
-    // backward-Euler step (x − x̂)/(τ/α₀) = f from x̂ = ((1+ω)x^m − ω²/(1+ω)x^{m−1})/α₀; the lagged coefficient
-    // (the gradient of the convection) from the extrapolation u* = (1+ω)u^m − ωu^{m−1}.
+    // backward-Euler step (x − x̂)/(τ/α₀) = f from x̂ = ((1+ω)x^m − ω²/(1+ω)x^{m−1})/α₀; the lagged
+    // coefficients (the transport velocity and gradient of the convection) from u* = (1+ω)u^m − ωu^{m−1}.
     const double omega = tau / previous_step, alpha0 = (1 + 2 * omega) / (1 + omega);
     VectorType   start(owned, geometry.get_communicator()), lagged(owned, geometry.get_communicator());
     start = state.solution;
@@ -378,7 +357,7 @@ namespace FluidSurface
   }
 
   void
-  SurfaceStep::leave_carried_frame(const RigidMotion &carried, const double tau, VectorType &solution) const
+  SurfaceStep::carry_fields(const RigidMotion &carried, const double tau, VectorType &solution) const
   {
     const Tensor<2, 3> Q = carried.rotation_over(tau);
     for (const auto &node : velocity_nodes)
@@ -976,7 +955,7 @@ namespace FluidSurface
     }
     if (carried_frame)
       {
-        leave_carried_frame(motion, tau, x1);
+        carry_fields(motion, tau, x1); // out of the carried frame: u = Qũ, Y = carry(Ỹ)
         candidate_solution = x1;
       }
     copy_new_position_to_geometry(candidate_solution);

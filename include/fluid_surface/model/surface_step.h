@@ -299,9 +299,13 @@ namespace FluidSurface
      */
     void
     prepare_bdf2_start(const RigidMotion &carried, const bool carried_frame, const double tau);
-    /// Law reference: maps the solution of a step in the carried frame back (u = Qũ, Y = the carry of Ỹ).
+    /**
+     * The rigid motion @p carried over the time @p tau applied to the nodal fields of @p solution: u ← Q(τ)u,
+     * Y ← carry(Y, τ). Law reference: maps the solution of a step out of the carried frame (τ the step), and the
+     * previous state of BDF2 into it (τ_p: the frame coordinates of t^m − τ_p).
+     */
     void
-    leave_carried_frame(const RigidMotion &carried, const double tau, VectorType &solution) const;
+    carry_fields(const RigidMotion &carried, const double tau, VectorType &solution) const;
     /// Whether the rigid-motion multipliers are part of the step.
     bool
     rigid_constraints() const
