@@ -272,22 +272,18 @@ namespace FluidSurface
     corrected_steps_left = data.has("model/corrected steps left") ? data.get_unsigned("model/corrected steps left") : 0;
     normal_speed_step    = 0;
     previous_step        = 0;
+    // A field of the history (ghosted) and the step it belongs to.
+    const auto read = [&](const std::string &field, const std::string &step_key, VectorType &vector, double &step) {
+      VectorType x;
+      data.get_fields(field, dofs, {&x});
+      vector.reinit(owned, relevant, geometry.get_communicator());
+      vector = x;
+      step   = data.get_double(step_key);
+    };
     if (bdf2 && data.has("model/previous step"))
-      {
-        VectorType x;
-        data.get_fields("previous state", dofs, {&x});
-        previous_solution.reinit(owned, relevant, geometry.get_communicator());
-        previous_solution = x;
-        previous_step     = data.get_double("model/previous step");
-      }
+      read("previous state", "model/previous step", previous_solution, previous_step);
     if (estimating_error && data.has("model/normal speed step"))
-      {
-        VectorType w;
-        data.get_fields("normal speed", dofs, {&w});
-        normal_speed.reinit(owned, relevant, geometry.get_communicator());
-        normal_speed      = w;
-        normal_speed_step = data.get_double("model/normal speed step");
-      }
+      read("normal speed", "model/normal speed step", normal_speed, normal_speed_step);
   }
 
   void
