@@ -22,6 +22,14 @@ namespace FluidSurface
                       "relative to the initial surface S₀ (shear stiffness μ, area stiffness K): a rigid motion "
                       "does not change the mesh, and element shape and size stay close to those of S₀ "
                       "(doc/scheme.md). Needs lumped = true.");
+    prm.declare_entry("tangential law",
+                      "membrane",
+                      Patterns::Selection("membrane|conformal"),
+                      "What moves the nodes tangentially under law reference (the exact carry and the carried frame "
+                      "stay). membrane: the membrane energy relative to the initial surface S₀ (μ, K). conformal: "
+                      "BGN's tangential rows (∇_S Y, ∇_S η) on the current surface (a conformal parametrization of "
+                      "it) added to the membrane energy's (μ = K = 0: BGN's alone). The candidates are measured side "
+                      "by side in doc/scheme.md (issue 22).");
     prm.declare_entry("shear stiffness",
                       "1",
                       RealRange::closed(0, 1e6),
@@ -71,6 +79,7 @@ namespace FluidSurface
   {
     prm.enter_subsection("mesh redistribution");
     law                 = prm.get("law") == "reference" ? Law::reference : Law::bgn;
+    conformal_tangential = prm.get("tangential law") == "conformal";
     shear_stiffness     = prm.get_double("shear stiffness");
     area_stiffness      = prm.get_double("area stiffness");
     lumped              = prm.get_bool("lumped");

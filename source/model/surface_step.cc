@@ -580,7 +580,10 @@ namespace FluidSurface
         if (reference_law)
           {
             redistribution.assemble_surface_laplacian(point, *layout, scratch.normal_rows);
-            redistribution.assemble_reference_terms(point,
+            if (redistribution.conformal_tangential)
+              redistribution.assemble_surface_laplacian(point, *layout, scratch.tangential_rows);
+            if (redistribution.shear_stiffness > 0 || redistribution.area_stiffness > 0)
+              redistribution.assemble_reference_terms(point,
                                                     scratch.reference_gradient[q],
                                                     rotation,
                                                     area_scale,

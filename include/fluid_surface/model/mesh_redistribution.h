@@ -125,6 +125,8 @@ namespace FluidSurface
 
     // The entries of `subsection mesh redistribution`, set by parse_parameters().
     Law    law{};                 ///< the tangential mesh law
+    /// Law reference: the tangential rows from BGN's (∇_S Y, ∇_S η) instead of the membrane energy.
+    bool   conformal_tangential{};
     double shear_stiffness{};     ///< μ of law reference
     double area_stiffness{};      ///< K of law reference
     bool   lumped{};              ///< (·,·)_h by the nodal quadrature
