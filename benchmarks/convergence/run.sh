@@ -50,7 +50,7 @@ PRM
     rm $work/$name.prm.new; echo "$name: kept"; continue
   fi
   mv $work/$name.prm.new $work/$name.prm
-  timeout $limit $exe $work/$name.prm > $work/$name.log 2>&1
-  echo "$name exit $? (124: stopped after $limit s)"
+  timeout $limit $exe $work/$name.prm > $work/$name.log 2>&1; status=$?
+  if [ $status = 124 ]; then echo "$name stopped after $limit s"; else echo "$name exit $status"; fi
 done; done; done
 /usr/bin/python3 $here/table.py $work $out $runs
