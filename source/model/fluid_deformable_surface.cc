@@ -331,6 +331,7 @@ namespace FluidSurface
     step.load_history(data);
     geometry.compute_curvature();
   }
+
   void
   FluidDeformableSurface::set_bdf2(const bool on)
   {
@@ -343,5 +344,4 @@ namespace FluidSurface
                           "time level = 1 (BDF2 needs the geometry of t + τ; a lagged geometry is first order)");
     step.set_bdf2(on);
   }
-
 } // namespace FluidSurface

@@ -28,8 +28,9 @@ namespace FluidSurface
                       "lagged step (one solve) until the energy check rejects one; that step is retried at the same "
                       "τ with the iterated geometry, and so are the next K accepted steps ('corrected steps'). The "
                       "lagged step keeps the growth rate of a small non-axisymmetric mode and is stable except in "
-                      "fast shape changes; the iterated one is stable there but damps that growth (doc/scheme.md, "
-                      "\"Implicit geometry\").");
+                      "fast shape changes; the iterated one is stable there but, with backward Euler, damps that growth "
+                      "(not with time stepping/scheme = BDF2, which needs apply = always; doc/scheme.md, \"Implicit "
+                      "geometry\").");
     prm.declare_entry("corrected steps",
                       "20",
                       Patterns::Integer(1, 100000),
