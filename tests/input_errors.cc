@@ -56,6 +56,9 @@ main(int argc, char **argv)
   try_file("bdf2_growth.prm",
            "subsection model\n  set scene = full\nend\nsubsection time stepping\n  set scheme = BDF2\n"
            "  set growth factor = 3\nend\nsubsection geometry iteration\n  set maximum iterations = 1\nend\n");
+  try_file("pull_without_conformal.prm",
+           "subsection model\n  set scene = full\nend\nsubsection mesh redistribution\n"
+           "  set pull onset quality = 0.2\n  set full pull quality = 0.15\nend\n");
   try_file("missing_mesh.prm", "subsection geometry\n  set shape = mesh file\n  set mesh file = nowhere.msh\nend\n");
 
   // A mesh with a triangle, and an open surface (one quadrilateral).

@@ -44,7 +44,7 @@ open(os.path.join(out, "results.csv"), "w").write("\n".join(print_rows) + "\n")
 print("\n".join(print_rows))
 fig, ax = plt.subplots(figsize=(5, 4))
 for shape in ("prolate", "oblate"):
-    for law, style in (("reference", "o-"), ("bgn", "s--")):
+    for law, style in (("experiments", "o-"), ("membrane", "d:"), ("bgn", "s--")):
         pts = sorted((r, e) for sh, lw, r, e in rows if sh == shape and lw == law and e > 0)
         if pts:
             ax.semilogy([p[0] for p in pts], [p[1] for p in pts], style, label=f"{shape}, law {law}")

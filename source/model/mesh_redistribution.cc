@@ -40,6 +40,20 @@ namespace FluidSurface
                       RealRange::closed(0, 1e6),
                       "K, 0 ≤ K ≤ 1e6, of law reference: the weight of the area energy ½∫_{S₀}(J − 1)², J the element area "
                       "over its initial area (normalized by the total area).");
+    prm.declare_entry("pull onset quality",
+                      "1",
+                      RealRange::closed(0, 1),
+                      "q₀, 0 ≤ q₀ ≤ 1, of law reference: the membrane energy (μ, K) acts only while the mesh quality "
+                      "q of S^m (min over cells of σ_min/σ_max) is below q₀, with the weight w(q) = 0 at q₀ rising "
+                      "smoothly to 1 at `full pull quality` q₁. Used with tangential law = conformal: the nodes keep "
+                      "BGN's conformal distribution while the mesh is good and are pulled towards the membrane "
+                      "energy's minimizer only when that distribution degrades (doc/scheme.md). 1 (with q₁ = 1): "
+                      "the full weight always.");
+    prm.declare_entry("full pull quality",
+                      "1",
+                      RealRange::closed(0, 1),
+                      "q₁, 0 ≤ q₁ ≤ q₀, of law reference: below this mesh quality the membrane energy acts with its "
+                      "full weight (see `pull onset quality`).");
     prm.declare_entry("lumped",
                       "true",
                       Patterns::Bool(),
@@ -82,19 +96,40 @@ namespace FluidSurface
     conformal_tangential = prm.get("tangential law") == "conformal";
     shear_stiffness     = prm.get_double("shear stiffness");
     area_stiffness      = prm.get_double("area stiffness");
+    pull_onset_quality  = prm.get_double("pull onset quality");
+    full_pull_quality   = prm.get_double("full pull quality");
     lumped              = prm.get_bool("lumped");
     relaxation_time     = prm.get_double("relaxation time");
     follow_rigid_motion = prm.get_bool("follow rigid motion");
     rigid_motion_cutoff = prm.get_double("rigid motion cutoff");
     mesh_quality_floor  = prm.get_double("mesh quality floor");
+    const std::string onset_text = prm.get("pull onset quality"), full_text = prm.get("full pull quality");
     prm.leave_subsection();
     if (law == Law::reference && shear_stiffness == 0 && area_stiffness == 0 && relaxation_time == 0)
       throw_invalid_entry("mesh redistribution/shear stiffness", "0",
                           "μ > 0, K > 0 or T_r > 0 with law = reference (otherwise nothing fixes the tangential "
                           "position of the nodes)");
+    if (full_pull_quality > pull_onset_quality)
+      throw_invalid_entry("mesh redistribution/full pull quality", full_text,
+                          "a number ≤ 'pull onset quality' = " + onset_text);
+    if (law == Law::reference && pull_onset_quality < 1 && !conformal_tangential)
+      throw_invalid_entry("mesh redistribution/pull onset quality", onset_text,
+                          "1 unless tangential law = conformal (the membrane energy is then the only tangential "
+                          "law, and it must always act)");
     if (law == Law::reference && !lumped)
       throw_invalid_entry("mesh redistribution/lumped", "false", "true with law = reference (its tangential "
                                                                   "projection acts at the nodes)");
+  }
+
+  double
+  MeshRedistribution::membrane_weight(const double quality) const
+  {
+    if (quality <= full_pull_quality)
+      return 1.0;
+    if (quality >= pull_onset_quality)
+      return 0.0;
+    const double x = (pull_onset_quality - quality) / (pull_onset_quality - full_pull_quality);
+    return x * x * (3.0 - 2.0 * x);
   }
 
   Quadrature<2>
@@ -168,6 +203,7 @@ namespace FluidSurface
                                                const Tensor<2, 3>       &reference_gradient,
                                                const Tensor<2, 3>       &rotation,
                                                const double              area_scale,
+                                               const double              weight,
                                                const DofLayout          &dofs,
                                                FullMatrix<double>       &matrix,
                                                Vector<double>           &rhs) const
@@ -183,8 +219,8 @@ namespace FluidSurface
     Tensor<2, 3>       tangent  = unit_symmetric_tensor<3>();
     tangent -= outer_product(nu, nu);
     const Tensor<2, 3> A        = (trace * tangent - M) / root;
-    const double       mu       = shear_stiffness;
-    const double       K        = area_stiffness * area_scale;
+    const double       mu       = weight * shear_stiffness;
+    const double       K        = weight * area_stiffness * area_scale;
     const double       sJ       = area_scale * J;
     for (const unsigned int i : dofs.new_position)
       {

@@ -480,6 +480,10 @@ namespace FluidSurface
                         (request.law == MeshRedistribution::Law::reference || redistribution.damping(tau) > 0);
     const RigidMotion carried = carry ? motion : RigidMotion();
     const double      area_scale = state.target_area / m.area;
+    // The valve's relaxation solves (velocity at rest) always pull with full weight.
+    const double membrane_weight = request.velocity == StepRequest::Velocity::flow ?
+                                     redistribution.membrane_weight(old_measures.mesh_quality) :
+                                     1.0;
 
     const QGauss<2>     gauss(fe->degree + 1);
     const Quadrature<2> nodal = redistribution.nodal_quadrature(gauss, geometry.degree());
@@ -487,7 +491,7 @@ namespace FluidSurface
     auto worker = [&](const typename DoFHandler<2, 3>::active_cell_iterator &cell,
                       AssemblyScratch                                      &scratch,
                       LocalSystem                                          &local) {
-      assemble_cell(cell, tau, area_rate, carried, area_scale, scratch, local);
+      assemble_cell(cell, tau, area_rate, carried, area_scale, membrane_weight, scratch, local);
     };
     auto copier = [&](const LocalSystem &local) {
       constraints.distribute_local_to_global(local.matrix, local.rhs, local.indices, system_matrix, system_rhs);
@@ -524,6 +528,7 @@ namespace FluidSurface
                              const double                                         area_rate,
                              const RigidMotion                                   &carried,
                              const double                                         area_scale,
+                             const double                                         membrane_weight,
                              AssemblyScratch                                     &scratch,
                              LocalSystem                                         &local) const
   {
@@ -582,11 +587,12 @@ namespace FluidSurface
             redistribution.assemble_surface_laplacian(point, *layout, scratch.normal_rows);
             if (redistribution.conformal_tangential)
               redistribution.assemble_surface_laplacian(point, *layout, scratch.tangential_rows);
-            if (redistribution.shear_stiffness > 0 || redistribution.area_stiffness > 0)
+            if ((redistribution.shear_stiffness > 0 || redistribution.area_stiffness > 0) && membrane_weight > 0)
               redistribution.assemble_reference_terms(point,
                                                     scratch.reference_gradient[q],
                                                     rotation,
                                                     area_scale,
+                                                    membrane_weight,
                                                     *layout,
                                                     scratch.tangential_rows,
                                                     scratch.tangential_rhs);

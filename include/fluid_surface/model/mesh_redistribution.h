@@ -97,14 +97,15 @@ namespace FluidSurface
      *   μ[(∇Y A, ∇η) − (Q, ∇η)] + K s[(s J_m (Q:∇Y) (Q:∇η)) − ((s J_m + 1) Q:∇η)],
      *
      * Q:∇η = div_{S^m}(Qᵀη), s = A₀/A^m (@p area_scale, so that J averages 1). Both parts vanish at Y = Z when
-     * S^m is a rigid image of S₀. Adds to @p matrix and @p rhs in the rows of Y; they are tested with tangential
-     * η only (project_position_rows()).
+     * S^m is a rigid image of S₀. μ and K are multiplied by @p weight (membrane_weight()). Adds to @p matrix and
+     * @p rhs in the rows of Y; they are tested with tangential η only (project_position_rows()).
      */
     void
     assemble_reference_terms(const SurfacePointValues   &point,
                              const dealii::Tensor<2, 3> &reference_gradient,
                              const dealii::Tensor<2, 3> &rotation,
                              const double                area_scale,
+                             const double                weight,
                              const DofLayout            &dofs,
                              dealii::FullMatrix<double>  &matrix,
                              dealii::Vector<double>      &rhs) const;
@@ -123,12 +124,23 @@ namespace FluidSurface
                           dealii::FullMatrix<double>               &matrix,
                           dealii::Vector<double>                   &rhs);
 
+    /**
+     * The weight w(q) of the membrane energy at the mesh quality @p quality of S^m: 1 for q ≤ q₁ (`full pull
+     * quality`), 0 for q ≥ q₀ (`pull onset quality`), a smoothstep between. With the conformal rows the
+     * nodes keep BGN's distribution while the mesh is good and are pulled towards the membrane energy's
+     * minimizer only where the conformal distribution degrades.
+     */
+    double
+    membrane_weight(const double quality) const;
+
     // The entries of `subsection mesh redistribution`, set by parse_parameters().
     Law    law{};                 ///< the tangential mesh law
     /// Law reference: the tangential rows from BGN's (∇_S Y, ∇_S η) instead of the membrane energy.
     bool   conformal_tangential{};
     double shear_stiffness{};     ///< μ of law reference
     double area_stiffness{};      ///< K of law reference
+    double pull_onset_quality{};  ///< q₀: the membrane energy acts below this mesh quality
+    double full_pull_quality{};   ///< q₁: … and with its full weight below this one
     bool   lumped{};              ///< (·,·)_h by the nodal quadrature
     double relaxation_time{};     ///< T_r of the tangential damping (0: plain BGN)
     bool   follow_rigid_motion{}; ///< the damping relaxes towards X^m + τR instead of X^m

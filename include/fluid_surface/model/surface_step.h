@@ -239,13 +239,14 @@ namespace FluidSurface
      */
     void
     assemble(const double tau, const RigidMotion &motion, const SurfaceGeometry::Measures &old_measures);
-    /// One cell of assemble(): the Gauss-point terms, then the nodal terms (·,·)_h.
+    /// One cell of assemble(): the Gauss-point terms, then the nodal terms (·,·)_h. @p membrane_weight scales μ and K.
     void
     assemble_cell(const typename dealii::DoFHandler<2, 3>::active_cell_iterator &cell,
                   const double                                                   tau,
                   const double                                                   area_rate,
                   const RigidMotion                                             &carried,
                   const double                                                   area_scale,
+                  const double                                                   membrane_weight,
                   AssemblyScratch                                               &scratch,
                   LocalSystem                                                   &local) const;
     /**
