@@ -77,7 +77,7 @@ main(int argc, char **argv)
   const PhaseTwoErrors bgn = run("bgn", "  set law = bgn\n");
   const PhaseTwoErrors experiments =
     run("conformal_with_pull",
-        "  set tangential law = conformal\n  set pull onset quality = 0.2\n  set full pull quality = 0.15\n");
+        "  set tangential law = conformal\n  set pull onset quality = 0.2\n  set full pull quality = 0.2\n");
   const PhaseTwoErrors membrane = run("membrane", "  set tangential law = membrane\n");
   auto within = [&](const PhaseTwoErrors &e) {
     return (e.omega <= factor * bgn.omega && e.distance <= factor * bgn.distance) ? "yes" : "no";

@@ -236,6 +236,7 @@ namespace FluidSurface
   {
     if (corrected_steps_left > 0)
       --corrected_steps_left;
+    membrane_pull = candidate_membrane_pull;
     if (bdf2)
       {
         previous_solution.reinit(owned, relevant, geometry.get_communicator());
@@ -254,6 +255,8 @@ namespace FluidSurface
   {
     if (corrected_steps_left > 0)
       data.set("model/corrected steps left", corrected_steps_left);
+    if (membrane_pull > 0)
+      data.set("model/membrane pull", membrane_pull);
     if (bdf2 && previous_step > 0)
       {
         data.set("model/previous step", previous_step);
@@ -270,6 +273,8 @@ namespace FluidSurface
   SurfaceStep::load_history(const CheckpointData &data)
   {
     corrected_steps_left = data.has("model/corrected steps left") ? data.get_unsigned("model/corrected steps left") : 0;
+    membrane_pull           = data.has("model/membrane pull") ? data.get_double("model/membrane pull") : 0;
+    candidate_membrane_pull = membrane_pull;
     normal_speed_step    = 0;
     previous_step        = 0;
     // A field of the history (ghosted) and the step it belongs to.
@@ -481,9 +486,10 @@ namespace FluidSurface
     const RigidMotion carried = carry ? motion : RigidMotion();
     const double      area_scale = state.target_area / m.area;
     // The valve's relaxation solves (velocity at rest) always pull with full weight.
-    const double membrane_weight = request.velocity == StepRequest::Velocity::flow ?
-                                     redistribution.membrane_weight(old_measures.mesh_quality) :
-                                     1.0;
+    if (request.velocity == StepRequest::Velocity::flow)
+      candidate_membrane_pull =
+        std::max(membrane_pull, redistribution.membrane_weight(old_measures.mesh_quality));
+    const double membrane_weight = request.velocity == StepRequest::Velocity::flow ? candidate_membrane_pull : 1.0;
 
     const QGauss<2>     gauss(fe->degree + 1);
     const Quadrature<2> nodal = redistribution.nodal_quadrature(gauss, geometry.degree());

@@ -128,7 +128,7 @@ namespace FluidSurface
      * The weight w(q) of the membrane energy at the mesh quality @p quality of S^m: 1 for q ≤ q₁ (`full pull
      * quality`), 0 for q ≥ q₀ (`pull onset quality`), a smoothstep between. With the conformal rows the
      * nodes keep BGN's distribution while the mesh is good and are pulled towards the membrane energy's
-     * minimizer only where the conformal distribution degrades.
+     * minimizer only where the conformal distribution degrades. SurfaceStep uses the largest w of the run.
      */
     double
     membrane_weight(const double quality) const;

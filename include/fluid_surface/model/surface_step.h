@@ -372,6 +372,10 @@ namespace FluidSurface
     double normal_speed_step = 0;
     /// `geometry iteration/apply = after rejection`: accepted steps with iterated geometry still to come.
     unsigned int corrected_steps_left = 0;
+    /// The weight of the membrane energy: the largest w(q) of the accepted steps so far (a latch: a weight
+    /// that followed q up and down kept the mesh moving in a rigidly rotating end state, and F rose), and
+    /// that of the step under way.
+    double membrane_pull = 0, candidate_membrane_pull = 0;
     /// R = √(A^m/4π) of the last advance(): the length scale of the error estimate.
     double shape_radius = 1;
 
