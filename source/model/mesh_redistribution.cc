@@ -43,12 +43,12 @@ namespace FluidSurface
     prm.declare_entry("pull onset quality",
                       "1",
                       RealRange::closed(0, 1),
-                      "q₀, 0 ≤ q₀ ≤ 1, of law reference: the membrane energy (μ, K) acts only while the mesh quality "
-                      "q of S^m (min over cells of σ_min/σ_max) is below q₀, with the weight w(q) = 0 at q₀ rising "
-                      "smoothly to 1 at `full pull quality` q₁. Used with tangential law = conformal: the nodes keep "
-                      "BGN's conformal distribution while the mesh is good and are pulled towards the membrane "
-                      "energy's minimizer only when that distribution degrades (doc/scheme.md). 1 (with q₁ = 1): "
-                      "the full weight always.");
+                      "q₀, 0 ≤ q₀ ≤ 1, of law reference: the membrane energy (μ, K) is weighted by the largest w(q) of "
+                      "the run so far, q the mesh quality of S^m (min over cells of σ_min/σ_max), w = 0 for q ≥ q₀ "
+                      "rising smoothly to 1 at `full pull quality` q₁ (q₁ = q₀: a switch). Used with tangential law "
+                      "= conformal: the nodes keep BGN's conformal distribution until the mesh first degrades, then "
+                      "are pulled towards the membrane energy's minimizer (doc/scheme.md). 1 (with q₁ = 1): the full "
+                      "weight always.");
     prm.declare_entry("full pull quality",
                       "1",
                       RealRange::closed(0, 1),
