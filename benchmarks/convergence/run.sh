@@ -1,61 +1,79 @@
 #!/usr/bin/env bash
-# benchmarks/convergence: convergence in h of the full model's phase-2 figures (issue 22, item 3; first part).
-# prm/prolate.prm to t = 10 (⟨ω⟩[5, 10] and min E(L²)) and prm/oblate.prm to t = 3 (⟨ω⟩[2, 3]) at refinements
-# 2, 3, 4, for the mesh laws `experiments` (the prm files' law: conformal rows, the membrane pull below mesh
-# quality 0.2), `membrane` (the law reference's membrane energy always, the earlier setting) and `bgn`, against the rotating equilibrium at L₀
-# that each run's summary reports (`reference equilibrium angular velocity`). The τ check: refinement 3 again with
-# τ_max halved (`_halfdt`).
-#   benchmarks/convergence/run.sh [--quick]        from the repository root, after building (--quick: r2, r3)
-# Environment: WORK (default benchmarks/convergence/work, not committed), EXE, REFINEMENTS, LAWS, LIMIT (s per run;
-# a run that takes longer is stopped and listed as such: the law bgn collapses τ on the oblate at refinement 2).
+# benchmarks/convergence: convergence in h of the full model (issue 22, item 3).
+#   phase 2: prm/prolate.prm to t = 10 (⟨ω⟩[5, 10], min E(L²)) and prm/oblate.prm to t = 3 (⟨ω⟩[2, 3], the growth
+#            rate of e(λ) on [1.2, 2.5]) at each refinement, for the mesh laws `experiments` (the prm files' law:
+#            conformal rows, the membrane pull below mesh quality 0.2) and `bgn`, against the rotating equilibrium at
+#            L₀ that each run's summary reports. The prolate runs unseeded (shape perturbation 0, PROLATE_SEED): with
+#            the shipped seed its symmetry-breaking mode grows through [5, 10] and the window measures the mode and
+#            the step's damping of it, not the mesh (README.md). The τ check: the levels in HALVED with τ_max halved.
+#   end states: prm/prolate_long.prm and prm/oblate_long.prm as shipped at LONG_REFINEMENTS (F, W, λ₁..₃, ω).
+#   benchmarks/convergence/run.sh [--quick]        from the repository root, after building
+#     (--quick: refinements 2 and 3, no end states, in work/quick)
+# Environment: WORK (default benchmarks/convergence/work, not committed), EXE, JOBS (runs at once, default 1),
+# REFINEMENTS (default "2 3 4"), OBLATE_EXTRA (further oblate levels, e.g. 5), HALVED (default "3 4"),
+# LAWS (default "experiments bgn"), LONG_REFINEMENTS (default "2 3 4"), LIMIT (s per run, default 3600; a run that
+# takes longer is stopped and listed as such), PROLATE_SEED (default 0).
 set -u
 cd "$(dirname "$0")/../.."
 here=benchmarks/convergence
 exe=${EXE:-$PWD/build/fluid_surface}
 work=${WORK:-$PWD/$here/work}
 refinements=${REFINEMENTS:-"2 3 4"}
-laws=${LAWS:-"experiments membrane bgn"}
+oblate_extra=${OBLATE_EXTRA:-}
+halved=${HALVED:-"3 4"}
+laws=${LAWS:-"experiments bgn"}
+long_refinements=${LONG_REFINEMENTS:-"2 3 4"}
 limit=${LIMIT:-3600}
+prolate_seed=${PROLATE_SEED:-0}
 out=$here
-if [ "${1:-}" = "--quick" ]; then refinements="2 3"; work=$work/quick; out=$work; limit=${LIMIT:-180}; fi
+if [ "${1:-}" = "--quick" ]; then
+  refinements="2 3"; halved="3"; long_refinements=""; oblate_extra=""; work=$work/quick; out=$work; limit=${LIMIT:-180}
+fi
 mkdir -p "$work"
-runs=""
-for law in $laws; do for shape in prolate oblate; do for r in $refinements 3_halfdt; do
-  case $r in 3_halfdt) level=3; half=1;; *) level=$r; half=0;; esac
-  [ $half = 1 ] && ! echo " $refinements " | grep -q " 3 " && continue
-  name=${shape}_${law}_r$r
-  end=10; [ $shape = oblate ] && end=3
-  tau_max=$(grep -m1 "maximum time step" prm/$shape.prm | awk '{print $NF}')
-  [ $half = 1 ] && tau_max=$(awk -v t=$tau_max 'BEGIN { print t / 2 }')
-  cat > $work/$name.prm.new <<PRM
-include $PWD/prm/$shape.prm
-subsection geometry
-  set refinement = $level
-end
-subsection time stepping
-  set end time = $end
-  set maximum time step = $tau_max
-end
-subsection mesh redistribution
-$(case $law in
-  experiments) echo "  set law = reference";;
-  membrane) printf '  set law = reference\n  set tangential law = membrane\n  set pull onset quality = 1\n  set full pull quality = 1';;
-  *) echo "  set law = $law";;
-esac)
-end
-subsection output
-  set output directory = $work/$name
-  set overwrite = true
-  set write vtu = false
-  set screen interval = 100000
-end
-PRM
-  runs="$runs $name"
-  if cmp -s $work/$name.prm.new $work/$name.prm && grep -q '^status: completed' $work/$name/summary 2>/dev/null; then
-    rm $work/$name.prm.new; echo "$name: kept"; continue
+
+# write_prm <name> <prm> <refinement> <end time or ""> <τ_max factor> <law> <shape perturbation or "">
+write_prm() {
+  local name=$1 prm=$2 level=$3 end=$4 factor=$5 law=$6 seed=$7
+  local tau_max
+  tau_max=$(awk -v f="$factor" '/maximum time step/ { print $NF * f; exit }' prm/$prm.prm)
+  {
+    echo "include $PWD/prm/$prm.prm"
+    echo "subsection geometry"; echo "  set refinement = $level"; echo "end"
+    echo "subsection time stepping"
+    [ -n "$end" ] && echo "  set end time = $end"
+    echo "  set maximum time step = $tau_max"; echo "end"
+    [ -n "$seed" ] && { echo "subsection initial state"; echo "  set shape perturbation = $seed"; echo "end"; }
+    [ "$law" = bgn ] && { echo "subsection mesh redistribution"; echo "  set law = bgn"; echo "end"; }
+    echo "subsection checkpoint"; echo "  set resume = false"; echo "end"
+    echo "subsection output"; echo "  set output directory = $work/$name"; echo "  set overwrite = true"
+    echo "  set write vtu = false"; echo "  set screen interval = 100000"; echo "end"
+  } > "$work/$name.prm.new"
+  if cmp -s "$work/$name.prm.new" "$work/$name.prm" && grep -q '^status: completed' "$work/$name/summary" 2>/dev/null; then
+    rm "$work/$name.prm.new"; echo "$name: kept" >&2
+  else
+    mv "$work/$name.prm.new" "$work/$name.prm"; echo "$name"
   fi
-  mv $work/$name.prm.new $work/$name.prm
-  timeout $limit $exe $work/$name.prm > $work/$name.log 2>&1; status=$?
-  if [ $status = 124 ]; then echo "$name stopped after $limit s"; else echo "$name exit $status"; fi
-done; done; done
-/usr/bin/python3 $here/table.py $work $out $runs
+}
+
+# The queue, longest runs first so that JOBS > 1 balances.
+queue=$(
+  for r in $long_refinements; do for shape in prolate oblate; do
+    write_prm ${shape}_long_r$r ${shape}_long $r "" 1 experiments ""
+  done; done
+  for law in $laws; do for r in $(echo $refinements $oblate_extra | tr ' ' '\n' | sort -rn | uniq); do
+    for shape in prolate oblate; do
+      case " $refinements " in *" $r "*) ;; *) [ $shape = prolate ] && continue;; esac
+      [ $law != experiments ] && ! echo " $refinements " | grep -q " $r " && continue
+      end=10; seed=$prolate_seed; [ $shape = oblate ] && { end=3; seed=""; }
+      write_prm ${shape}_${law}_r$r $shape $r $end 1 $law "$seed"
+      echo " $halved " | grep -q " $r " && write_prm ${shape}_${law}_r${r}_halfdt $shape $r $end 0.5 $law "$seed"
+    done
+  done; done
+)
+run_one() {
+  timeout "$limit" "$exe" "$work/$1.prm" > "$work/$1.log" 2>&1; status=$?
+  if [ $status = 124 ]; then echo "$1 stopped after $limit s"; else echo "$1 exit $status"; fi
+}
+export -f run_one; export exe work limit
+[ -n "$queue" ] && echo "$queue" | xargs -P "${JOBS:-1}" -I{} bash -c 'run_one {}'
+/usr/bin/python3 $here/table.py "$work" "$out"
