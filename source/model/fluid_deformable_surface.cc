@@ -58,6 +58,23 @@ namespace FluidSurface
                       RealRange::closed(0, 1),
                       "Amplitude ε_X, 0 ≤ ε_X ≤ 1, of a smooth seeded random radial displacement of the initial "
                       "shape (at most ε_X; a displacement of the order of the shape's size folds the surface).");
+    prm.declare_entry("perturbation form",
+                      "random",
+                      Patterns::Selection("random|azimuthal"),
+                      "Form of the radial displacement ε_X δ(x) of `shape perturbation`. random: δ a smooth seeded "
+                      "random field. azimuthal: one azimuthal mode about the rotation axis e through the centre of "
+                      "mass, δ = Re h_m(x̂)/max|h_m| with x̂ the unit vector from the centre, h_m = ξ^m (even) or ζξ^m "
+                      "(odd), ξ = x̂·e₁ + i x̂·e₂, ζ = x̂·e (m = 0: the axisymmetric P₂, P₃); for growth rates by "
+                      "azimuthal wavenumber (with diagnostics/azimuthal modes).");
+    prm.declare_entry("azimuthal wavenumber",
+                      "2",
+                      Patterns::Integer(0, 16),
+                      "m, 0 ≤ m ≤ 16, of perturbation form = azimuthal.");
+    prm.declare_entry("azimuthal parity",
+                      "even",
+                      Patterns::Selection("even|odd"),
+                      "Parity of perturbation form = azimuthal under reflection through the equatorial plane "
+                      "(ζ → −ζ); m = 1 odd tilts the axis.");
     prm.declare_entry("random seed", "1", Patterns::Integer(0), "Seed ≥ 0 of the perturbations (same on every rank).");
     prm.leave_subsection();
   }
@@ -84,6 +101,14 @@ namespace FluidSurface
     velocity_perturbation = prm.get_double("velocity perturbation");
     shape_perturbation    = prm.get_double("shape perturbation");
     random_seed           = prm.get_integer("random seed");
+    if (prm.get("perturbation form") == "azimuthal" && shape_perturbation == 0)
+      throw_invalid_entry("initial state/perturbation form",
+                          "azimuthal",
+                          "random unless shape perturbation > 0 (the mode is the form of that displacement)");
+    if (prm.get("perturbation form") == "azimuthal")
+      azimuthal_perturbation = std::make_unique<AzimuthalHarmonic>(rotation_axis,
+                                                                   prm.get_integer("azimuthal wavenumber"),
+                                                                   prm.get("azimuthal parity") == "odd");
     prm.leave_subsection();
   }
 
@@ -171,7 +196,9 @@ namespace FluidSurface
         const Point<3>          centre(geometry.measure().centre_of_mass);
         geometry.transform_nodes([&](const Point<3> &x) {
           const Tensor<1, 3> radial = x - centre;
-          return Point<3>(x + shape_perturbation * field(x) * radial / radial.norm());
+          const double       delta =
+            azimuthal_perturbation ? azimuthal_perturbation->normalized_real_part(radial) : field(x);
+          return Point<3>(x + shape_perturbation * delta * radial / radial.norm());
         });
       }
     if (equilibrium_rotation)

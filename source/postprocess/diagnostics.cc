@@ -3,6 +3,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <fluid_surface/flow/energy_functionals.h>
+#include <fluid_surface/geometry/azimuthal_harmonic.h>
 #include <fluid_surface/io/checkpoint.h>
 #include <fluid_surface/postprocess/diagnostics.h>
 #include <fluid_surface/io/parameter_file.h>
@@ -41,6 +42,14 @@ namespace FluidSurface
                       Patterns::Integer(16, 65536),
                       "Number n, 16 ≤ n ≤ 65536, of equispaced polar angles φ_j at which the sections of S and S_O are compared "
                       "in E(L²) (trapezoidal rule).");
+    prm.declare_entry("azimuthal modes",
+                      "",
+                      Patterns::List(Patterns::Integer(1, 16), 0, 16),
+                      "Wavenumbers m, 1 ≤ m ≤ 16, of the azimuthal moments Q_m = (1/|S|)∫ h_m(x − x_c) dA about e "
+                      "through the centre of mass x_c, h_m = ξ^m (even) and ζξ^m (odd), ξ = x·e₁ + i x·e₂, ζ = x·e: "
+                      "zero on a shape symmetric about e; on a perturbed rotating equilibrium |Q_m| grows or decays "
+                      "with the m-th modes' rate and arg Q_m turns at m times the pattern's angular velocity. Columns "
+                      "`mode m even amplitude`, `… phase`, `mode m odd amplitude`, `… phase`. Empty: none.");
     prm.leave_subsection();
   }
 
@@ -60,6 +69,9 @@ namespace FluidSurface
                           "t₀ < t₁");
     reference_equilibrium = prm.get("reference equilibrium");
     section_angles        = prm.get_integer("section angles");
+    azimuthal_modes.clear();
+    for (const auto &m : Utilities::split_string_list(prm.get("azimuthal modes")))
+      azimuthal_modes.push_back(Utilities::string_to_int(m));
     prm.leave_subsection();
   }
 
@@ -406,8 +418,12 @@ namespace FluidSurface
                                                  update_JxW_values);
     const FEValuesExtractors::Vector velocity(0);
     std::vector<Tensor<1, 3>>        u(q.size());
-    // [0] F_kin, [1] ∫ω-integrand, [2..4] ∫u, [5..7] L, [8..16] I
-    double local[17] = {};
+    // [0] F_kin, [1] ∫ω-integrand, [2..4] ∫u, [5..7] L, [8..16] I, then Re and Im of ∫h_m (even, odd) per m
+    std::vector<AzimuthalHarmonic> harmonics;
+    for (const unsigned int mode : azimuthal_modes)
+      for (const bool odd : {false, true})
+        harmonics.emplace_back(axis, mode, odd);
+    std::vector<double> local(17 + 2 * harmonics.size());
     double max_un    = 0;
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -431,10 +447,19 @@ namespace FluidSurface
                   for (unsigned int e = 0; e < 3; ++e)
                     local[8 + 3 * d + e] += ((d == e ? x.norm_square() : 0.0) - x[d] * x[e]) * dA;
                 }
+              for (unsigned int j = 0; j < harmonics.size(); ++j)
+                {
+                  const std::complex<double> h = harmonics[j](x);
+                  local[17 + 2 * j] += h.real() * dA;
+                  local[18 + 2 * j] += h.imag() * dA;
+                }
               max_un = std::max(max_un, std::abs(u[k] * fe_values.normal_vector(k)));
             }
         }
-    Utilities::MPI::sum(ArrayView<const double>(local, 17), geometry.get_communicator(), ArrayView<double>(local, 17));
+    Utilities::MPI::sum(ArrayView<const double>(local.data(), local.size()), geometry.get_communicator(),
+                        ArrayView<double>(local.data(), local.size()));
+    for (unsigned int j = 0; j < harmonics.size(); ++j)
+      v.azimuthal_moments.emplace_back(local[17 + 2 * j] / m.area, local[18 + 2 * j] / m.area);
     v.max_normal_velocity = Utilities::MPI::max(max_un, geometry.get_communicator());
     v.kinetic_energy      = local[0];
     v.angular_velocity    = local[1] / m.area;
@@ -545,6 +570,12 @@ namespace FluidSurface
         statistics.add_value("L2 distance to equilibrium", v.l2_distance);
         statistics.add_value("L2 distance axial section", v.l2_distance_axial);
         statistics.add_value("L2 distance equatorial section", v.l2_distance_equatorial);
+      }
+    for (unsigned int j = 0; j < v.azimuthal_moments.size(); ++j)
+      {
+        const std::string name = "mode " + std::to_string(azimuthal_modes[j / 2]) + (j % 2 ? " odd" : " even");
+        statistics.add_value(name + " amplitude", std::abs(v.azimuthal_moments[j]));
+        statistics.add_value(name + " phase", std::arg(v.azimuthal_moments[j]));
       }
   }
 

@@ -9,6 +9,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <fluid_surface/geometry/azimuthal_harmonic.h>
 #include <fluid_surface/geometry/surface_geometry.h>
 #include <fluid_surface/model/dof_layout.h>
 #include <fluid_surface/model/step_request.h>
@@ -241,6 +242,8 @@ namespace FluidSurface
     double               velocity_perturbation{}; ///< ε_u
     double               shape_perturbation{};    ///< ε_X
     unsigned int         random_seed{};           ///< seed of the perturbations
+    /// The single mode of `perturbation form = azimuthal`; nullptr for the random field.
+    std::unique_ptr<AzimuthalHarmonic> azimuthal_perturbation;
   };
 } // namespace FluidSurface
 

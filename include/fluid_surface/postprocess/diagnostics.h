@@ -10,6 +10,7 @@
 #include <fluid_surface/geometry/surface_geometry.h>
 
 #include <array>
+#include <complex>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -70,6 +71,8 @@ namespace FluidSurface
       double l2_distance_axial      = std::numeric_limits<double>::quiet_NaN();
       double l2_distance_equatorial = std::numeric_limits<double>::quiet_NaN();
       double l2_distance            = std::numeric_limits<double>::quiet_NaN();
+      /// Q_m (even, odd) for each of the `azimuthal modes` (AzimuthalHarmonic), in that order.
+      std::vector<std::complex<double>> azimuthal_moments;
     };
 
     /// E(L²) of the axial and equatorial sections of @p geometry (about its centre of mass and the axis e) to
@@ -174,6 +177,7 @@ namespace FluidSurface
 
     std::string  reference_equilibrium = "none"; ///< `reference equilibrium`: none, prolate or oblate
     unsigned int section_angles        = 256;    ///< `section angles`: n of section_polar_radius
+    std::vector<unsigned int> azimuthal_modes; ///< `azimuthal modes`: the m of the moments Q_m
     std::unique_ptr<AxisymmetricEquilibrium> reference_shape;
     std::vector<double> reference_meridian; ///< r_O(φ_j) of reference_shape's meridian section
     double       min_l2_distance = std::numeric_limits<double>::quiet_NaN(), min_l2_time = 0;
