@@ -11,10 +11,11 @@ namespace FluidSurface
   /**
    * The solid harmonics about an axis e that single out one azimuthal wavenumber m of a shape: with the
    * right-handed orthonormal frame (e₁, e₂, e) and ξ = x·e₁ + i x·e₂, ζ = x·e,
-   *   h_m^even(x) = ξ^m,  h_m^odd(x) = ζ ξ^m  (m ≥ 1),
+   *   h_m^even(x) = ξ^m (m ≥ 2),  h_1^even(x) = ξ(5ζ² − |x|²),  h_m^odd(x) = ζ ξ^m  (m ≥ 1),
    *   h_0^even(x) = ζ² − |x|²/3,  h_0^odd(x) = ζ(ζ² − 3|x|²/5)  (the axisymmetric P₂ and P₃).
+   * (ξ itself would be a translation, and its moment about the centre of mass vanishes identically.)
    * Under a rotation by α about e, h_m picks up the phase e^{imα}; the parity is that under ζ → −ζ. On the unit
-   * sphere Re h is the spherical harmonic Y_m^m (even) or Y_{m+1}^m (odd), up to a factor; m = 1 odd is the tilt
+   * sphere Re h is the spherical harmonic Y_m^m (even; Y_3^1 for m = 1) or Y_{m+1}^m (odd), up to a factor; m = 1 odd is the tilt
    * of the axis.
    */
   class AzimuthalHarmonic
@@ -41,7 +42,9 @@ namespace FluidSurface
       if (m == 0)
         return odd ? zeta * (zeta * zeta - 0.6 * x.norm_square()) : zeta * zeta - x.norm_square() / 3.0;
       const std::complex<double> xi_m = std::pow(std::complex<double>(x * e1, x * e2), static_cast<int>(m));
-      return odd ? zeta * xi_m : xi_m;
+      if (odd)
+        return zeta * xi_m;
+      return m == 1 ? xi_m * (5.0 * zeta * zeta - x.norm_square()) : xi_m;
     }
 
     /// Re h(x/|x|) / max over the unit sphere of |h|: a smooth displacement amplitude in [−1, 1].
@@ -59,7 +62,8 @@ namespace FluidSurface
       if (m == 0)
         return odd ? 0.4 : 2.0 / 3.0;
       if (!odd)
-        return 1.0;
+        return m == 1 ? 8.0 / 3.0 * std::sqrt(4.0 / 15.0) : 1.0; // sin θ(4 − 5 sin²θ) at sin²θ = 4/15
+
       const double c = 1.0 / std::sqrt(m + 1.0); // cos θ of the maximum of cos θ sin^m θ
       return c * std::pow(1.0 - c * c, 0.5 * m);
     }
