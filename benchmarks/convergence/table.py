@@ -93,7 +93,7 @@ for run in runs:
                   rigid=c["rigid fraction"][-1], rises=s.get("energy rises accepted", ""),
                   quality=min(c["mesh quality"]), wall=float(s.get("wall time", "nan")))
     ends.setdefault(m[1], {})[int(m[2])] = values
-lines = ["shape,quantity,refinement,value,observed order,extrapolated,relative error"]
+lines = ["shape,quantity,refinement,value,observed order,extrapolated,relative error,relative change to the next level"]
 extrapolated = {}
 for shape, levels in sorted(ends.items()):
     rs = sorted(levels)
@@ -107,13 +107,14 @@ for shape, levels in sorted(ends.items()):
         extrapolated[(shape, key)] = limit
         for r in rs:
             err = abs(levels[r][key] - limit) / abs(limit) if limit else None
+            change = abs(levels[r + 1][key] - levels[r][key]) / abs(levels[r + 1][key]) if r + 1 in levels else None
             lines.append(",".join([shape, key, str(r), f"{levels[r][key]:.8g}", fmt(order, ".2f"),
-                                   fmt(limit, ".8g"), fmt(err, ".2e")]))
+                                   fmt(limit, ".8g"), fmt(err, ".2e"), fmt(change, ".2e")]))
     for r in rs:
         v = levels[r]
         lines.append(",".join([shape, "run", str(r), f"status {v['status']}; end time {v['end_time']:.2f}; rigid "
                                f"fraction {v['rigid']:.6f}; accepted rises {v['rises']}; min quality "
-                               f"{v['quality']:.3f}; wall {v['wall']:.0f} s", "", "", ""]))
+                               f"{v['quality']:.3f}; wall {v['wall']:.0f} s", "", "", "", ""]))
 open(os.path.join(out, "end_states.csv"), "w").write("\n".join(lines) + "\n")
 print("\n".join(lines))
 
