@@ -11,6 +11,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "work_precision"))
 from run_records import statistics_columns, summary  # noqa: E402
@@ -123,21 +124,30 @@ for shape, colour in (("prolate", "C0"), ("oblate", "C1")):
     for law, style in (("experiments", "o-"), ("membrane", "d:"), ("bgn", "s--")):
         pts = sorted((p["r"], p["err"], p["emin"]) for p in phase2
                      if (p["shape"], p["law"], p["halved"]) == (shape, law, False) and p["err"] > 0)
+        half = sorted((p["r"], p["err"], p["emin"]) for p in phase2
+                      if (p["shape"], p["law"], p["halved"]) == (shape, law, True) and p["err"] > 0)
+        filled = "none" if law == "bgn" else colour
         if pts:
-            axes[0].semilogy([p[0] for p in pts], [p[1] for p in pts], style, color=colour, label=f"{shape}, {law}")
+            axes[0].semilogy([p[0] for p in pts], [p[1] for p in pts], style, color=colour, mfc=filled,
+                             label=f"{shape}, {law}")
+        if half:
+            axes[0].semilogy([p[0] for p in half], [p[1] for p in half], "x", color=colour, ms=8,
+                             label=f"{shape}, {law}, τ_max halved")
         if pts and shape == "prolate":
-            axes[1].semilogy([p[0] for p in pts], [p[2] for p in pts], style, color=colour, label=f"{shape}, {law}")
+            axes[1].semilogy([p[0] for p in pts], [p[2] for p in pts], style, color=colour, mfc=filled,
+                             label=f"{shape}, {law}")
 for shape, levels in sorted(ends.items()):
     for (_, key), marker in zip(END_STATE, "os^v<>"):
         limit = extrapolated.get((shape, key))
-        pts = [(r, abs(levels[r][key] - limit) / abs(limit)) for r in sorted(levels)[:-1]] if limit else []
+        pts = [(r, abs(levels[r][key] - limit) / abs(limit)) for r in sorted(levels)] if limit else []
         if pts:
             axes[2].semilogy(*zip(*pts), marker + ("-" if shape == "prolate" else "--"), label=f"{shape}_long {key}")
 axes[0].set_ylabel("|⟨ω⟩ − ω_eq(L₀)| / ω_eq")
 axes[1].set_ylabel("min E(L²), prolate")
 axes[2].set_ylabel("end state: relative distance to the Richardson limit")
 for ax, title in zip(axes, ("phase-2 angular velocity", "distance to the equilibrium shape", "end states of the long runs")):
-    ax.set_xlabel("refinement")
+    ax.set_xlabel("refinement r (h ∝ 2⁻ʳ: a log–log plot)")
+    ax.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
     ax.set_title(title, fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
     if ax.get_legend_handles_labels()[0]:
