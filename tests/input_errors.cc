@@ -59,6 +59,9 @@ main(int argc, char **argv)
   try_file("pull_without_conformal.prm",
            "subsection model\n  set scene = full\nend\nsubsection mesh redistribution\n"
            "  set pull onset quality = 0.2\n  set full pull quality = 0.15\nend\n");
+  try_file("anchor_with_bgn.prm",
+           "subsection model\n  set scene = full\nend\nsubsection mesh redistribution\n"
+           "  set law = bgn\n  set anchor time = 4\nend\n");
   try_file("azimuthal_without_amplitude.prm",
            "subsection model\n  set scene = full\nend\nsubsection initial state\n"
            "  set perturbation form = azimuthal\nend\n");

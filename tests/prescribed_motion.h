@@ -18,6 +18,7 @@ namespace FluidSurface
     dealii::ParameterHandler prm;
     SurfaceGeometry          geometry{MPI_COMM_WORLD};
     FluidDeformableSurface   model{geometry};
+    double                   time = 0; ///< t of the accepted state
 
     /// An ellipsoid with @p semi_axes at @p refinement, the flow's constraints off, then @p overrides.
     PrescribedMotion(const std::string  &semi_axes,
@@ -52,7 +53,8 @@ namespace FluidSurface
       if (!result.solved)
         throw std::runtime_error(result.failure);
       geometry.compute_curvature();
-      model.accept();
+      time += tau;
+      model.accept(time);
     }
   };
 } // namespace FluidSurface

@@ -280,12 +280,19 @@ namespace FluidSurface
     return step.advance(run_request, tau);
   }
 
-  void
-  FluidDeformableSurface::accept()
+  bool
+  FluidDeformableSurface::accept(const double time)
   {
     step.accept_history(); // before the state moves on: BDF2 keeps it as x^{m−1}
     state.position = geometry.position();
     state.solution = step.candidate();
+    const double anchor_time = step.redistribution.anchor_time;
+    if (anchored || anchor_time < 0 || time < anchor_time)
+      return false;
+    set_reference_surface(state.position);
+    step.pull_fully();
+    anchored = true;
+    return true;
   }
 
   void
@@ -341,6 +348,8 @@ namespace FluidSurface
     data.set("model/random seed", random_seed);
     reparametrization.save(data);
     step.save_history(data);
+    if (anchored)
+      data.set("model/anchored", 1u);
   }
 
   void
@@ -356,6 +365,7 @@ namespace FluidSurface
     step.set_n_factorizations(data.get_unsigned("model/factorizations"));
     reparametrization.load(data);
     step.load_history(data);
+    anchored = data.has("model/anchored");
     geometry.compute_curvature();
   }
 

@@ -54,6 +54,16 @@ namespace FluidSurface
                       RealRange::closed(0, 1),
                       "q₁, 0 ≤ q₁ ≤ q₀, of law reference: below this mesh quality the membrane energy acts with its "
                       "full weight (see `pull onset quality`).");
+    prm.declare_entry("anchor time",
+                      "-1",
+                      Patterns::Double(-1, 1e6),
+                      "t_a, −1 or 0 ≤ t_a ≤ 1e6, of law reference: at the first accepted step ending at t ≥ t_a the "
+                      "reference surface S₀ of the membrane energy becomes the current surface and the energy "
+                      "acts with its full weight from then on (the latch of `pull onset quality` set to 1). With "
+                      "tangential law = conformal: the nodes keep BGN's distribution through the initial relaxation "
+                      "and are then held where they are, instead of creeping along the conformal distribution (which "
+                      "feeds energy into a rotating steady state); later deformations pull towards that mesh, not "
+                      "the initial one (doc/scheme.md). −1: never.");
     prm.declare_entry("lumped",
                       "true",
                       Patterns::Bool(),
@@ -98,12 +108,14 @@ namespace FluidSurface
     area_stiffness      = prm.get_double("area stiffness");
     pull_onset_quality  = prm.get_double("pull onset quality");
     full_pull_quality   = prm.get_double("full pull quality");
+    anchor_time         = prm.get_double("anchor time");
     lumped              = prm.get_bool("lumped");
     relaxation_time     = prm.get_double("relaxation time");
     follow_rigid_motion = prm.get_bool("follow rigid motion");
     rigid_motion_cutoff = prm.get_double("rigid motion cutoff");
     mesh_quality_floor  = prm.get_double("mesh quality floor");
     const std::string onset_text = prm.get("pull onset quality"), full_text = prm.get("full pull quality");
+    const std::string anchor_text = prm.get("anchor time");
     prm.leave_subsection();
     if (law == Law::reference && shear_stiffness == 0 && area_stiffness == 0 && relaxation_time == 0)
       throw_invalid_entry("mesh redistribution/shear stiffness", "0",
@@ -116,6 +128,11 @@ namespace FluidSurface
       throw_invalid_entry("mesh redistribution/pull onset quality", onset_text,
                           "1 unless tangential law = conformal (the membrane energy is then the only tangential "
                           "law, and it must always act)");
+    if (anchor_time >= 0 && law != Law::reference)
+      throw_invalid_entry("mesh redistribution/anchor time", anchor_text,
+                          "−1 unless law = reference (only its membrane energy has a reference surface)");
+    if (anchor_time < 0 && anchor_time != -1)
+      throw_invalid_entry("mesh redistribution/anchor time", anchor_text, "−1 or a time ≥ 0");
     if (law == Law::reference && !lumped)
       throw_invalid_entry("mesh redistribution/lumped", "false", "true with law = reference (its tangential "
                                                                   "projection acts at the nodes)");

@@ -258,7 +258,9 @@ namespace FluidSurface
             << " at a rate that does not fall with τ (space discretization); step accepted" << std::endl;
     if (energy.step_size)
       time.set_step_size(*energy.step_size);
-    model.accept();
+    if (model.accept(time.time() + tau))
+      pcout << "    mesh law anchored at t = " << time.time() + tau
+            << ": the membrane energy now pulls towards this surface, with full weight" << std::endl;
     time.accept(tau, error_estimate);
     willmore = candidate.willmore;
   }

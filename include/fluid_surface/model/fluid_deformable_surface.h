@@ -62,9 +62,12 @@ namespace FluidSurface
      */
     void
     set_prescribed_velocity(const dealii::Function<3> &velocity);
-    /// Makes the last advance() the current state.
-    void
-    accept();
+    /**
+     * Makes the last advance() the current state, which is that of time @p time. Returns true when this step
+     * anchored the mesh law (`mesh redistribution/anchor time`): S₀ is now the current surface.
+     */
+    bool
+    accept(const double time);
     /// Undoes the last advance() (geometry and fields).
     void
     restore_last_state();
@@ -242,6 +245,7 @@ namespace FluidSurface
     double               velocity_perturbation{}; ///< ε_u
     double               shape_perturbation{};    ///< ε_X
     unsigned int         random_seed{};           ///< seed of the perturbations
+    bool anchored = false; ///< `mesh redistribution/anchor time` has passed (checkpoint key `model/anchored`)
     /// The single mode of `perturbation form = azimuthal`; nullptr for the random field.
     std::unique_ptr<AzimuthalHarmonic> azimuthal_perturbation;
   };

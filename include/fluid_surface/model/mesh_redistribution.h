@@ -141,6 +141,7 @@ namespace FluidSurface
     double area_stiffness{};      ///< K of law reference
     double pull_onset_quality{};  ///< q₀: the membrane energy acts below this mesh quality
     double full_pull_quality{};   ///< q₁: … and with its full weight below this one
+    double anchor_time{};         ///< t_a: S₀ becomes the surface of that time, with full weight (−1: never)
     bool   lumped{};              ///< (·,·)_h by the nodal quadrature
     double relaxation_time{};     ///< T_r of the tangential damping (0: plain BGN)
     bool   follow_rigid_motion{}; ///< the damping relaxes towards X^m + τR instead of X^m

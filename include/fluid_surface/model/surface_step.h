@@ -193,6 +193,12 @@ namespace FluidSurface
     /// corrected step of `apply = after rejection` is used up.
     void
     accept_history();
+    /// From now on the membrane energy acts with its full weight (`mesh redistribution/anchor time`).
+    void
+    pull_fully()
+    {
+      membrane_pull = candidate_membrane_pull = 1;
+    }
     /// The next step has no error estimate and is a backward-Euler step (the state jumped: a re-parametrization).
     void
     forget_error_history()
