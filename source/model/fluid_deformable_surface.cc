@@ -63,9 +63,9 @@ namespace FluidSurface
                       Patterns::Selection("random|azimuthal"),
                       "Form of the radial displacement ε_X δ(x) of `shape perturbation`. random: δ a smooth seeded "
                       "random field. azimuthal: one azimuthal mode about the rotation axis e through the centre of "
-                      "mass, δ = Re h_m(x̂)/max|h_m| with x̂ the unit vector from the centre, h_m = ξ^m (even) or ζξ^m "
-                      "(odd), ξ = x̂·e₁ + i x̂·e₂, ζ = x̂·e (m = 0: the axisymmetric P₂, P₃); for growth rates by "
-                      "azimuthal wavenumber (with diagnostics/azimuthal modes).");
+                      "mass, δ = Re h_m(x̂)/max|h_m| with x̂ the unit vector from the centre, h_m = ξ^m (even; "
+                      "ξ(5ζ² − 1) for m = 1) or ζξ^m (odd), ξ = x̂·e₁ + i x̂·e₂, ζ = x̂·e (m = 0: the axisymmetric "
+                      "P₂, P₃); for growth rates by azimuthal wavenumber (with diagnostics/azimuthal modes).");
     prm.declare_entry("azimuthal wavenumber",
                       "2",
                       Patterns::Integer(0, 16),

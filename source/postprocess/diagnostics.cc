@@ -46,7 +46,8 @@ namespace FluidSurface
                       "",
                       Patterns::List(Patterns::Integer(1, 16), 0, 16),
                       "Wavenumbers m, 1 ≤ m ≤ 16, of the azimuthal moments Q_m = (1/|S|)∫ h_m(x − x_c) dA about e "
-                      "through the centre of mass x_c, h_m = ξ^m (even) and ζξ^m (odd), ξ = x·e₁ + i x·e₂, ζ = x·e: "
+                      "through the centre of mass x_c, h_m = ξ^m (even; ξ(5ζ² − |x|²) for m = 1) and ζξ^m (odd), "
+                      "ξ = x·e₁ + i x·e₂, ζ = x·e: "
                       "zero on a shape symmetric about e; on a perturbed rotating equilibrium |Q_m| grows or decays "
                       "with the m-th modes' rate and arg Q_m turns at m times the pattern's angular velocity. Columns "
                       "`mode m even amplitude`, `… phase`, `mode m odd amplitude`, `… phase`. Empty: none.");

@@ -17,6 +17,8 @@
 #include <fluid_surface/model/surface_state.h>
 #include <fluid_surface/model/surface_step.h>
 
+#include <memory>
+
 namespace FluidSurface
 {
   class CheckpointData;
