@@ -10,10 +10,7 @@
 // and the mesh's m = 4 times ε).
 #include <deal.II/base/mpi.h>
 
-#include <fluid_surface/time_stepping/time_stepper.h>
-#include <fluid_surface/postprocess/diagnostics.h>
-#include <fluid_surface/model/fluid_deformable_surface.h>
-#include <fluid_surface/scenes/simulation.h>
+#include "surface_run.h"
 
 #include <cmath>
 #include <cstdio>
@@ -26,32 +23,17 @@ namespace
   Diagnostics::Values
   moments(const double epsilon, const unsigned int m, const std::string &parity)
   {
-    dealii::ParameterHandler prm;
-    Simulation::declare_parameters(prm);
-    prm.enter_subsection("geometry");
-    prm.set("semi-axes", "1, 1, 1");
-    prm.set("refinement", "3");
-    prm.leave_subsection();
-    prm.enter_subsection("initial state");
-    prm.set("shape perturbation", std::to_string(epsilon));
-    prm.set("perturbation form", epsilon > 0 ? "azimuthal" : "random");
-    prm.set("azimuthal wavenumber", std::to_string(m));
-    prm.set("azimuthal parity", parity);
-    prm.leave_subsection();
-    prm.enter_subsection("diagnostics");
-    prm.set("azimuthal modes", "1, 2, 3, 4");
-    prm.leave_subsection();
-    SurfaceGeometry geometry(MPI_COMM_WORLD);
-    geometry.parse_parameters(prm);
-    geometry.create();
-    FluidDeformableSurface model(geometry);
-    TimeStepper time;
-    time.parse_parameters(prm);
-    model.parse_parameters(prm, time.maximum_step_size());
-    model.setup();
-    Diagnostics diagnostics;
-    diagnostics.parse_parameters(prm);
-    return diagnostics.evaluate(geometry, model.dof_handler(), model.solution());
+    SurfaceRun run("ellipsoid",
+                   "1, 1, 1",
+                   3,
+                   "prolate",
+                   false,
+                   {{"initial state/shape perturbation", std::to_string(epsilon)},
+                    {"initial state/perturbation form", epsilon > 0 ? "azimuthal" : "random"},
+                    {"initial state/azimuthal wavenumber", std::to_string(m)},
+                    {"initial state/azimuthal parity", parity},
+                    {"diagnostics/azimuthal modes", "1, 2, 3, 4"}});
+    return run.diagnostics.evaluate(run.geometry, run.model.dof_handler(), run.model.solution());
   }
 
   void

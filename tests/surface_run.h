@@ -1,6 +1,6 @@
 // A surface, its flow model and diagnostics built from the default parameters with a chosen shape
 // (shared by the diagnostics and equilibrium tests). The equilibrium is the prolate or oblate rotating
-// shape with A = 4π, v = 0.75 and ω = 2.
+// shape with A = 4π, v = 0.75 and ω = 2. Further entries: @p overrides.
 #ifndef fluid_surface_tests_surface_run_h
 #define fluid_surface_tests_surface_run_h
 
@@ -8,6 +8,8 @@
 #include <fluid_surface/postprocess/diagnostics.h>
 #include <fluid_surface/model/fluid_deformable_surface.h>
 #include <fluid_surface/scenes/simulation.h>
+
+#include "parameter_overrides.h"
 
 #include <string>
 
@@ -24,7 +26,8 @@ namespace FluidSurface
               const std::string &semi_axes,
               const unsigned int refinement,
               const std::string &branch               = "prolate",
-              const bool         equilibrium_rotation = false)
+              const bool         equilibrium_rotation = false,
+              const Overrides   &overrides            = {})
     {
       Simulation::declare_parameters(prm);
       prm.enter_subsection("geometry");
@@ -39,6 +42,7 @@ namespace FluidSurface
       prm.enter_subsection("initial state");
       prm.set("equilibrium rotation", equilibrium_rotation ? "true" : "false");
       prm.leave_subsection();
+      set_overrides(prm, overrides);
       geometry.parse_parameters(prm);
       geometry.create();
       TimeStepper time;
