@@ -65,6 +65,18 @@ main(int argc, char **argv)
   try_file("azimuthal_without_amplitude.prm",
            "subsection model\n  set scene = full\nend\nsubsection initial state\n"
            "  set perturbation form = azimuthal\nend\n");
+  try_file("stability_without_equilibrium.prm", "subsection model\n  set scene = stability\nend\n");
+  // The equilibrium of Be = 1 under a bending force of Be = 2 is not at rest: the unperturbed map drifts.
+  try_file("stability_not_equilibrium.prm",
+           "subsection model\n  set scene = stability\nend\nsubsection geometry\n  set shape = equilibrium\n"
+           "  set refinement = 1\n  set position degree = 2\nend\nsubsection equilibrium\n"
+           "  set area = 12.600857094577847\n  set reduced volume = 0.7549530890154922\n  set branch = oblate\n"
+           "  set Be = 1\n  set angular momentum = 46.64242839801514\nend\nsubsection flow\n  set conserve momenta = "
+           "true\nend\nsubsection bending\n  set Be = 2\nend\nsubsection initial state\n  set equilibrium rotation = "
+           "true\nend\nsubsection time stepping\n  set time step = 0.05\nend\nsubsection stability\n"
+           "  set map time = 0.1\nend\nsubsection output\n  set output directory = stability_not_equilibrium\n"
+           "  set overwrite = true\n  set report wall time = false\nend\n",
+           true);
   try_file("missing_mesh.prm", "subsection geometry\n  set shape = mesh file\n  set mesh file = nowhere.msh\nend\n");
 
   // A mesh with a triangle, and an open surface (one quadrilateral).

@@ -305,6 +305,24 @@ namespace FluidSurface
     step.request_factorization();
   }
 
+  void
+  FluidDeformableSurface::restart_from(const SurfaceState &new_state)
+  {
+    state = new_state;
+    VectorType position(geometry.locally_owned_dofs(), geometry.get_communicator());
+    position = state.position;
+    geometry.set_position(position);
+    VectorType solution(step.dof_handler().locally_owned_dofs(), geometry.get_communicator());
+    solution = state.solution;
+    step.copy_position_into(position, solution);
+    step.hanging_node_constraints().distribute(solution);
+    state.solution = solution;
+    set_reference_position();
+    step.forget_error_history();
+    step.request_factorization();
+    geometry.compute_curvature();
+  }
+
   SurfaceReparametrization::Result
   FluidDeformableSurface::reparametrize()
   {

@@ -9,6 +9,7 @@
 #include <fluid_surface/scenes/full_model_scene.h>
 #include <fluid_surface/scenes/geometry_scene.h>
 #include <fluid_surface/scenes/simulation.h>
+#include <fluid_surface/scenes/stability_scene.h>
 #include <fluid_surface/time_stepping/steady_state.h>
 #include <fluid_surface/time_stepping/time_stepper.h>
 
@@ -30,13 +31,15 @@ namespace FluidSurface
     prm.enter_subsection("model");
     prm.declare_entry("scene",
                       "geometry",
-                      Patterns::Selection("geometry|fixed surface|full"),
+                      Patterns::Selection("geometry|fixed surface|full|stability"),
                       "What the run computes. geometry: build the surface, measure it (area, volume, "
                       "reduced volume, Willmore energy ½∫H²) and write it; no time steps. fixed surface: surface "
                       "(Navier–)Stokes on the frozen surface, the verification problems of subsection fixed "
                       "surface (no geometry update, bending or volume multiplier). full: the fluid "
                       "deformable surface (surface Navier–Stokes, bending, volume constraint, mesh "
-                      "redistribution) on the moving surface.");
+                      "redistribution) on the moving surface. stability: the leading eigenvalues, by azimuthal "
+                      "wavenumber, of the rotating equilibrium of geometry/shape = equilibrium under the full model "
+                      "(subsection stability; doc/stability.md).");
     prm.leave_subsection();
     SurfaceFlow::declare_parameters(prm);
     ReusedFactorizationSolver::declare_parameters(prm);
@@ -48,6 +51,7 @@ namespace FluidSurface
     Diagnostics::declare_parameters(prm);
     Checkpoint::declare_parameters(prm);
     SteadyState::declare_parameters(prm);
+    StabilityScene::declare_parameters(prm);
   }
 
   void
@@ -58,6 +62,8 @@ namespace FluidSurface
     prm.leave_subsection();
     if (name == "full")
       scene = std::make_unique<FullModelScene>(communicator, geometry, output, statistics, pcout, wall_timer);
+    else if (name == "stability")
+      scene = std::make_unique<StabilityScene>(communicator, geometry, output, statistics, pcout, wall_timer);
     else if (name == "fixed surface")
       scene = std::make_unique<FixedSurfaceScene>(geometry, output, statistics, pcout);
     else

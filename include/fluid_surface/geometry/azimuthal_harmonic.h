@@ -3,6 +3,7 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <array>
 #include <cmath>
 #include <complex>
 
@@ -27,11 +28,20 @@ namespace FluidSurface
       , m(m)
       , odd(odd)
     {
+      const std::array<dealii::Tensor<1, 3>, 2> frame = transverse_frame(e);
+      e1                                              = frame[0];
+      e2                                              = frame[1];
+    }
+
+    /// The unit vectors e₁, e₂ with (e₁, e₂, @p axis) right-handed and orthonormal: φ = arg ξ is measured from e₁.
+    static std::array<dealii::Tensor<1, 3>, 2>
+    transverse_frame(const dealii::Tensor<1, 3> &axis)
+    {
       dealii::Tensor<1, 3> helper;
-      helper[std::abs(e[0]) < 0.9 ? 0 : 1] = 1;
-      e1 = helper - (helper * e) * e;
-      e1 /= e1.norm();
-      e2 = dealii::cross_product_3d(e, e1);
+      helper[std::abs(axis[0]) < 0.9 ? 0 : 1] = 1;
+      dealii::Tensor<1, 3> first              = helper - (helper * axis) * axis;
+      first /= first.norm();
+      return {{first, dealii::cross_product_3d(axis, first)}};
     }
 
     /// h(x) for x relative to a point on the axis.

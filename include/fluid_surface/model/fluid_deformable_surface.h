@@ -73,6 +73,31 @@ namespace FluidSurface
     /// Undoes the last advance() (geometry and fields).
     void
     restore_last_state();
+    /// The accepted state.
+    const SurfaceState &
+    accepted_state() const
+    {
+      return state;
+    }
+    /**
+     * Makes @p new_state (of this model's DoFs, with its targets A₀, V₀, g_k) the accepted state, Y = X: moves the
+     * geometry to its X and starts afresh, without the history of BDF2 or of the error estimate (the next step
+     * is a backward-Euler step) and with a new factorization. The mesh law's reference S₀ is that of @p new_state.
+     */
+    void
+    restart_from(const SurfaceState &new_state);
+    /// The axis e of the initial rotation (`initial state/rotation axis`, normalized).
+    const dealii::Tensor<1, 3> &
+    initial_rotation_axis() const
+    {
+      return rotation_axis;
+    }
+    /// ω₀ of the initial rotation (after setup(): the equilibrium's ω with `equilibrium rotation`).
+    double
+    initial_angular_velocity() const
+    {
+      return angular_velocity;
+    }
     /// After a rejected step: whether it was a lagged step that `geometry iteration/apply = after rejection`
     /// retries, at the same τ, with the iterated geometry (SurfaceStep::iterate_geometry_after_rejection()).
     bool

@@ -1,0 +1,145 @@
+#ifndef fluid_surface_scenes_stability_scene_h
+#define fluid_surface_scenes_stability_scene_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <fluid_surface/model/fluid_deformable_surface.h>
+#include <fluid_surface/model/nodal_vector_field.h>
+#include <fluid_surface/scenes/scene.h>
+
+#include <complex>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace FluidSurface
+{
+  /**
+   * Scene `stability`: the leading eigenvalues of the rotating axisymmetric equilibrium of `geometry/shape =
+   * equilibrium`, by azimuthal wavenumber m and parity, from the time-T map of the full model (time-stepper based
+   * stability, Tuckerman & Barkley). The map Φ_T advances a state (X, u) by T/τ steps of the model's own step (as
+   * `time stepping/scheme` says; BDF2's first step split into τ/8, τ/8, τ/4, τ/2) with the targets A₀, V₀, L₀ of
+   * the equilibrium, so that a perturbation is carried on the constraints. Its linearization
+   *   A v = R(−θ)[Φ_T(x_eq + εv) − Φ_T(x_eq)]/ε
+   * about x_eq (the equilibrium after `settling time`), θ the angle through which the nodes of the unperturbed
+   * map turned, is the linearized full model over T in the frame of the nodes. Arnoldi on A from the seed h_m of
+   * (m, parity) gives multipliers μ with growth rates σ = ln|μ|/T; each Ritz vector is classified by its azimuthal
+   * content (NodalVectorField::azimuthal_content()), and its frequency arg μ/T is turned into the co-rotating one.
+   * The rows go to `spectrum.csv` in the output directory, written after each wavenumber (a run that stops keeps
+   * the rows so far); the Arnoldi iterations to the statistics file. doc/stability.md describes the method.
+   */
+  class StabilityScene : public Scene
+  {
+  public:
+    /// See Scene; @p wall_timer is the Simulation's clock.
+    StabilityScene(const MPI_Comm                    communicator,
+                   SurfaceGeometry                  &geometry,
+                   OutputWriter                     &output,
+                   StatisticsFile                   &statistics,
+                   const dealii::ConditionalOStream &pcout,
+                   const dealii::Timer              &wall_timer);
+
+    /// Declares `subsection stability`.
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    /// Reads it, the time stepping (τ, scheme) and the model; InputError unless the shape is an unperturbed
+    /// equilibrium rotating rigidly with its ω.
+    void
+    parse_parameters(dealii::ParameterHandler &prm) override;
+
+    /// The unperturbed map (and the check that it is an equilibrium), then Arnoldi for each wavenumber and parity.
+    void
+    run() override;
+
+  private:
+    /// A perturbation (δX, δu): the position in the geometry numbering, the velocity in the flow numbering
+    /// (zero on p, κ, y, Y); both owned.
+    struct Perturbation
+    {
+      VectorType position;
+      VectorType velocity;
+      double
+      dot(const Perturbation &other) const
+      {
+        return position * other.position + velocity * other.velocity;
+      }
+      void
+      add(const double a, const Perturbation &other)
+      {
+        position.add(a, other.position);
+        velocity.add(a, other.velocity);
+      }
+      void
+      scale(const double a)
+      {
+        position *= a;
+        velocity *= a;
+      }
+    };
+
+    /// One eigenvalue (with its conjugate) of the map, classified.
+    struct Mode
+    {
+      std::complex<double> multiplier; ///< μ, Im μ ≥ 0
+      double               residual;   ///< ‖A z − μ z‖/|μ| of its unit Ritz vector z
+      unsigned int         m;          ///< the wavenumber of the largest azimuthal content
+      bool                 odd;        ///< its parity
+      double               purity;     ///< the share of that content in the whole
+      double frequency; ///< the co-rotating frequency of arg Q_m (signed, in (−π/T, π/T])
+    };
+
+    /// A zero perturbation.
+    Perturbation
+    zero() const;
+    /// The state after @p steps steps from @p start; RunFailed (naming @p what) if a step is not solved.
+    SurfaceState
+    advanced(const SurfaceState &start, const unsigned int steps, const std::string &what);
+    /// A v (see the class); @p what names the map application in a failure.
+    Perturbation
+    mapped(const Perturbation &v, const std::string &what);
+    /// The unit seed: the radial displacement Re h_m/max|h_m| (AzimuthalHarmonic), no velocity.
+    Perturbation
+    seed(const unsigned int m, const bool odd) const;
+    /// Arnoldi from seed(m, odd) until the leading Ritz value of (m, odd) converges or the Krylov space is full;
+    /// the leading modes of (m, odd).
+    std::vector<Mode>
+    arnoldi(const unsigned int m, const bool odd);
+    /// The Ritz values of the leading j×j block of @p H with their residuals and the classification of their Ritz
+    /// vectors in the Krylov @p basis; sorted by |μ|, one per conjugate pair.
+    std::vector<Mode>
+    ritz_modes(const dealii::FullMatrix<double> &H, const unsigned int j, const std::vector<Perturbation> &basis) const;
+    /// Appends @p modes of the run from (m, parity) to spectrum.csv (rank 0).
+    void
+    write_rows(const unsigned int m, const bool odd, const std::vector<Mode> &modes) const;
+
+    MPI_Comm             communicator;
+    const dealii::Timer &wall_timer;
+    FluidDeformableSurface model;
+
+    // subsection stability
+    std::vector<unsigned int> wavenumbers;           ///< m
+    std::vector<bool>         parities;              ///< false: even, true: odd
+    double                    map_time = 0;          ///< T
+    unsigned int              n_steps  = 0;          ///< T/τ
+    unsigned int              n_settling_steps = 0;  ///< t_s/τ
+    double                    tau      = 0;          ///< τ
+    bool                      bdf2     = false;      ///< `time stepping/scheme = BDF2`
+    unsigned int              max_krylov = 0;        ///< largest Krylov dimension
+    unsigned int              n_reported = 0;        ///< eigenvalue pairs reported per (m, parity)
+    double                    epsilon    = 0;        ///< ε
+    double                    residual_tolerance = 0;    ///< convergence of the leading Ritz value
+    double                    equilibrium_tolerance = 0; ///< largest drift of the unperturbed map, relative
+
+    SurfaceState                      base;     ///< x_eq
+    SurfaceState                      base_end; ///< Φ_T(x_eq)
+    dealii::Tensor<2, 3>              back_rotation; ///< R(−θ)
+    double                            node_rotation_rate = 0; ///< θ/T
+    dealii::Tensor<1, 3>              axis;
+    dealii::Point<3>                  centre;
+    std::unique_ptr<NodalVectorField> positions, velocities;
+    std::string                       spectrum_file;
+  };
+} // namespace FluidSurface
+
+#endif

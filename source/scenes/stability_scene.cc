@@ -1,0 +1,491 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <fluid_surface/geometry/azimuthal_harmonic.h>
+#include <fluid_surface/io/parameter_file.h>
+#include <fluid_surface/io/run_stopped.h>
+#include <fluid_surface/scenes/stability_scene.h>
+#include <fluid_surface/time_stepping/time_stepper.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace FluidSurface
+{
+  using namespace dealii;
+
+  StabilityScene::StabilityScene(const MPI_Comm            communicator,
+                                 SurfaceGeometry          &geometry,
+                                 OutputWriter             &output,
+                                 StatisticsFile           &statistics,
+                                 const ConditionalOStream &pcout,
+                                 const Timer              &wall_timer)
+    : Scene(geometry, output, statistics, pcout)
+    , communicator(communicator)
+    , wall_timer(wall_timer)
+    , model(geometry)
+  {}
+
+  void
+  StabilityScene::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("stability");
+    prm.declare_entry("wavenumbers",
+                      "0, 1, 2, 3, 4",
+                      Patterns::List(Patterns::Integer(0, 8), 1, 9),
+                      "Azimuthal wavenumbers m, 0 ≤ m ≤ 8, whose leading eigenvalues scene stability computes (one "
+                      "Arnoldi run per m and parity, started from the mode h_m of initial state/perturbation form).");
+    prm.declare_entry("parities",
+                      "even, odd",
+                      Patterns::List(Patterns::Selection("even|odd"), 1, 2),
+                      "Parities under reflection through the equatorial plane (even: the mode h_m, odd: ζh_m; m = 1 "
+                      "odd tilts the axis) of the seeds.");
+    prm.declare_entry("map time",
+                      "0.3",
+                      RealRange::left_open(0, 100),
+                      "T, 0 < T ≤ 100, of the time-T map whose multipliers μ give σ = ln|μ|/T and Ω = arg μ/T; a multiple of "
+                      "time stepping/time step. Frequencies |Ω| < π/T are resolved; a larger T separates the "
+                      "leading eigenvalues more per Krylov vector.");
+    prm.declare_entry("settling time",
+                      "0",
+                      RealRange::closed(0, 1e6),
+                      "t_s, 0 ≤ t_s ≤ 1e6, a multiple of time stepping/time step: the unperturbed model runs for t_s before the "
+                      "analysis, so that the equilibrium of the continuous problem (interpolated on the mesh) settles "
+                      "to that of the discrete one, about which the map is linearized.");
+    prm.declare_entry("maximum Krylov dimension",
+                      "20",
+                      Patterns::Integer(2, 60),
+                      "k, 2 ≤ k ≤ 60: map applications per wavenumber and parity at most (each one a run over T).");
+    prm.declare_entry("eigenvalues per wavenumber",
+                      "3",
+                      Patterns::Integer(1, 60),
+                      "Eigenvalue pairs (μ, μ̄) reported per wavenumber and parity: those of largest |μ| whose Ritz "
+                      "vectors have that wavenumber and parity.");
+    prm.declare_entry("perturbation size",
+                      "1e-5",
+                      RealRange::closed(1e-9, 1e-2),
+                      "ε, 1e-9 ≤ ε ≤ 1e-2, of the finite-difference linearization [Φ_T(x + εv) − Φ_T(x)]/ε, v of unit "
+                      "norm (nodal values of X and u).");
+    prm.declare_entry("residual tolerance",
+                      "1e-3",
+                      RealRange::left_open(0, 1),
+                      "Tolerance, 0 < tol ≤ 1: Arnoldi stops when the residual ‖Az − μz‖/|μ| of the leading Ritz value of the seed's "
+                      "wavenumber and parity is below it. One still above it at the maximum Krylov dimension is "
+                      "written with its residual, and the run ends with exit status 1 after the last wavenumber.");
+    prm.declare_entry("equilibrium tolerance",
+                      "0.02",
+                      RealRange::left_open(0, 1e6),
+                      "Largest drift rate, > 0, of the unperturbed map: the largest distance of a node of Φ_T(x_eq), "
+                      "turned back by the fitted angle, from x_eq, per radius R = √(A/4π) and unit time. Above it "
+                      "the start is not an equilibrium of the discrete model and the run ends (exit 2); the "
+                      "interpolated equilibrium relaxes to the discrete one at a rate that falls with h.");
+    prm.leave_subsection();
+  }
+
+  void
+  StabilityScene::parse_parameters(ParameterHandler &prm)
+  {
+    TimeStepper time;
+    time.parse_parameters(prm);
+    tau  = time.step_size();
+    bdf2 = time.bdf2();
+    model.parse_parameters(prm, time.maximum_step_size());
+    model.set_bdf2(time.bdf2());
+    if (geometry.equilibrium_shape() == nullptr)
+      {
+        prm.enter_subsection("geometry");
+        const std::string shape = prm.get("shape");
+        prm.leave_subsection();
+        throw_invalid_entry("geometry/shape",
+                            shape,
+                            "equilibrium with scene stability (the rotating state whose spectrum is computed)");
+      }
+    prm.enter_subsection("initial state");
+    if (!prm.get_bool("equilibrium rotation"))
+      throw_invalid_entry("initial state/equilibrium rotation",
+                          "false",
+                          "true with scene stability (the equilibrium rotates rigidly with its ω)");
+    for (const std::string entry : {"shape perturbation", "velocity perturbation"})
+      if (prm.get_double(entry) != 0)
+        throw_invalid_entry("initial state/" + entry,
+                            prm.get(entry),
+                            "0 with scene stability (it perturbs the equilibrium itself, one mode at a time)");
+    prm.leave_subsection();
+
+    prm.enter_subsection("stability");
+    wavenumbers.clear();
+    for (const std::string &m : Utilities::split_string_list(prm.get("wavenumbers")))
+      wavenumbers.push_back(Utilities::string_to_int(m));
+    parities.clear();
+    for (const std::string &p : Utilities::split_string_list(prm.get("parities")))
+      parities.push_back(p == "odd");
+    map_time = prm.get_double("map time");
+    n_steps  = static_cast<unsigned int>(std::lround(map_time / tau));
+    if (n_steps == 0 || std::abs(n_steps * tau - map_time) > 1e-9 * map_time)
+      throw_invalid_entry("stability/map time",
+                          prm.get("map time"),
+                          "a positive multiple of time stepping/time step (" + Utilities::to_string(tau) + ")");
+    const double settling_time = prm.get_double("settling time");
+    n_settling_steps           = static_cast<unsigned int>(std::lround(settling_time / tau));
+    if (std::abs(n_settling_steps * tau - settling_time) > 1e-9 * std::max(settling_time, tau))
+      throw_invalid_entry("stability/settling time",
+                          prm.get("settling time"),
+                          "0 or a multiple of time stepping/time step (" + Utilities::to_string(tau) + ")");
+    max_krylov            = prm.get_integer("maximum Krylov dimension");
+    n_reported            = prm.get_integer("eigenvalues per wavenumber");
+    epsilon               = prm.get_double("perturbation size");
+    residual_tolerance    = prm.get_double("residual tolerance");
+    equilibrium_tolerance = prm.get_double("equilibrium tolerance");
+    if (n_reported > max_krylov)
+      throw_invalid_entry("stability/eigenvalues per wavenumber",
+                          prm.get("eigenvalues per wavenumber"),
+                          "at most the maximum Krylov dimension (" + std::to_string(max_krylov) + ")");
+    prm.leave_subsection();
+  }
+
+  StabilityScene::Perturbation
+  StabilityScene::zero() const
+  {
+    Perturbation v;
+    v.position.reinit(geometry.locally_owned_dofs(), communicator);
+    v.velocity.reinit(model.dof_handler().locally_owned_dofs(), communicator);
+    return v;
+  }
+
+  SurfaceState
+  StabilityScene::advanced(const SurfaceState &start, const unsigned int steps, const std::string &what)
+  {
+    model.restart_from(start);
+    // BDF2 starts with a backward-Euler step, whose damping of the fields turning through the nodes (at mω) would
+    // bias σ by ln|1 − imωτ|/T; the ramp τ/8, τ/8, τ/4, τ/2 (step ratios ≤ 2, within BDF2's zero-stability) makes
+    // that first step short.
+    std::vector<double> sizes;
+    if (bdf2 && steps > 0)
+      sizes = {tau / 8, tau / 8, tau / 4, tau / 2};
+    while (sizes.size() < steps + (sizes.empty() ? 0 : 3))
+      sizes.push_back(tau);
+    double time = 0;
+    for (unsigned int n = 0; n < sizes.size(); ++n)
+      {
+        const SurfaceStep::Result step = model.advance(sizes[n]);
+        if (!step.solved)
+          {
+            std::ostringstream reason;
+            reason << "step " << n + 1 << " of the time map of " << what << " was not solved (" << step.failure << ")";
+            throw RunFailed(reason.str(),
+                            "the rows of spectrum.csv so far are intact; try a smaller 'time stepping/time step' or "
+                            "'stability/perturbation size'");
+          }
+        time += sizes[n];
+        model.accept(time);
+      }
+    return model.accepted_state();
+  }
+
+  StabilityScene::Perturbation
+  StabilityScene::mapped(const Perturbation &v, const std::string &what)
+  {
+    SurfaceState start = base;
+    VectorType   owned(geometry.locally_owned_dofs(), communicator);
+    owned = base.position;
+    owned.add(epsilon, v.position);
+    start.position = owned;
+    VectorType fields(model.dof_handler().locally_owned_dofs(), communicator);
+    fields = base.solution;
+    fields.add(epsilon, v.velocity);
+    start.solution = fields;
+
+    const SurfaceState end = advanced(start, n_steps, what);
+    Perturbation       w   = zero();
+    positions->rotated_difference(end.position, base_end.position, 1 / epsilon, back_rotation, w.position);
+    velocities->rotated_difference(end.solution, base_end.solution, 1 / epsilon, back_rotation, w.velocity);
+    return w;
+  }
+
+  StabilityScene::Perturbation
+  StabilityScene::seed(const unsigned int m, const bool odd) const
+  {
+    const AzimuthalHarmonic harmonic(axis, m, odd);
+    Perturbation            v = zero();
+    positions->radial_field(centre, [&](const Tensor<1, 3> &x) { return harmonic.normalized_real_part(x); }, v.position);
+    v.scale(1 / std::sqrt(v.dot(v)));
+    return v;
+  }
+
+  namespace
+  {
+    /// A solution y of (H − μI) y ≈ 0 of unit norm: inverse iteration with the shift μ moved off the spectrum.
+    std::vector<std::complex<double>>
+    null_vector(const FullMatrix<double> &H, const unsigned int n, const std::complex<double> mu)
+    {
+      const std::complex<double>        shift = mu + std::max(1.0, std::abs(mu)) * 1e-10;
+      std::vector<std::complex<double>> y(n, 1.0);
+      for (unsigned int iteration = 0; iteration < 3; ++iteration)
+        {
+          // Gaussian elimination with partial pivoting of (H − shift I) y_new = y.
+          std::vector<std::vector<std::complex<double>>> a(n, std::vector<std::complex<double>>(n + 1));
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              for (unsigned int j = 0; j < n; ++j)
+                a[i][j] = H(i, j) - (i == j ? shift : 0.0);
+              a[i][n] = y[i];
+            }
+          for (unsigned int c = 0; c < n; ++c)
+            {
+              unsigned int pivot = c;
+              for (unsigned int r = c + 1; r < n; ++r)
+                if (std::abs(a[r][c]) > std::abs(a[pivot][c]))
+                  pivot = r;
+              std::swap(a[c], a[pivot]);
+              if (a[c][c] == 0.0)
+                a[c][c] = 1e-300;
+              for (unsigned int r = c + 1; r < n; ++r)
+                {
+                  const std::complex<double> f = a[r][c] / a[c][c];
+                  for (unsigned int j = c; j <= n; ++j)
+                    a[r][j] -= f * a[c][j];
+                }
+            }
+          for (unsigned int i = n; i-- > 0;)
+            {
+              std::complex<double> s = a[i][n];
+              for (unsigned int j = i + 1; j < n; ++j)
+                s -= a[i][j] * y[j];
+              y[i] = s / a[i][i];
+            }
+          double norm = 0;
+          for (const auto &v : y)
+            norm += std::norm(v);
+          for (auto &v : y)
+            v /= std::sqrt(norm);
+        }
+      return y;
+    }
+  } // namespace
+
+  std::vector<StabilityScene::Mode>
+  StabilityScene::ritz_modes(const FullMatrix<double>        &H,
+                             const unsigned int               j,
+                             const std::vector<Perturbation> &basis) const
+  {
+    LAPACKFullMatrix<double> block(j, j);
+    for (unsigned int r = 0; r < j; ++r)
+      for (unsigned int c = 0; c < j; ++c)
+        block(r, c) = H(r, c);
+    block.compute_eigenvalues();
+    std::vector<Mode> modes;
+    for (unsigned int i = 0; i < j; ++i)
+      {
+        const std::complex<double> mu = block.eigenvalue(i);
+        if (mu.imag() < 0)
+          continue;
+        const std::vector<std::complex<double>> y = null_vector(H, j, mu);
+        Mode                                    mode;
+        mode.multiplier = mu;
+        mode.residual   = std::abs(H(j, j - 1) * y[j - 1]) / std::max(std::abs(mu), 1e-300);
+        mode.m          = 0;
+        mode.odd        = false;
+        mode.purity     = 0;
+        mode.frequency  = std::arg(mu) / map_time;
+          {
+            Perturbation re = zero(), im = zero();
+            for (unsigned int k = 0; k < j; ++k)
+              {
+                re.add(y[k].real(), basis[k]);
+                im.add(y[k].imag(), basis[k]);
+              }
+            const unsigned int M       = 2 * *std::max_element(wavenumbers.begin(), wavenumbers.end()) + 4;
+            auto               content = positions->azimuthal_content(re.position, im.position, axis, centre, M);
+            const auto         flow    = velocities->azimuthal_content(re.velocity, im.velocity, axis, centre, M);
+            double             total = 0, best = -1;
+            int                best_k = 0;
+            for (unsigned int w = 0; w < content.size(); ++w)
+              for (unsigned int p = 0; p < 2; ++p)
+                {
+                  content[w][p] += flow[w][p];
+                  total += content[w][p];
+                  if (content[w][p] > best)
+                    {
+                      best     = content[w][p];
+                      best_k   = static_cast<int>(w) - static_cast<int>(M);
+                      mode.odd = p == 1;
+                    }
+                }
+            mode.m      = std::abs(best_k);
+            mode.purity = total > 0 ? best / total : 0;
+            // z ∝ e^{imφ} with μ = e^{(σ + iΩ)T}: the real mode ∝ cos(mφ + Ωt), arg Q_m turns at −Ω in the frame
+            // of the nodes, which turns at θ/T; the body turns at ω. Co-rotating: minus m(ω − θ/T), modulo 2π/T.
+            if (best_k > 0)
+              mode.frequency = -mode.frequency;
+            const double period = 2 * numbers::PI / map_time;
+            double       f      = mode.frequency - mode.m * (model.initial_angular_velocity() - node_rotation_rate);
+            f -= period * std::round(f / period);
+            mode.frequency = f;
+          }
+        modes.push_back(mode);
+      }
+    std::sort(modes.begin(), modes.end(), [](const Mode &a, const Mode &b) {
+      return std::abs(a.multiplier) > std::abs(b.multiplier);
+    });
+    return modes;
+  }
+
+  std::vector<StabilityScene::Mode>
+  StabilityScene::arnoldi(const unsigned int m, const bool odd)
+  {
+    const std::string what = "m = " + std::to_string(m) + (odd ? " odd" : " even");
+    // The modes of the seed's wavenumber and parity, by |μ|; the Krylov space also holds others (the cube-sphere
+    // couples m and m ± 4), which their own seeds find.
+    const auto of_seed = [&](const std::vector<Mode> &all) {
+      std::vector<Mode> selected;
+      for (const Mode &mode : all)
+        if (mode.m == m && mode.odd == odd)
+          selected.push_back(mode);
+      return selected;
+    };
+    std::vector<Perturbation> V{seed(m, odd)};
+    FullMatrix<double>        H(max_krylov + 1, max_krylov);
+    std::vector<Mode>         modes;
+    for (unsigned int j = 1; j <= max_krylov; ++j)
+      {
+        Perturbation w = mapped(V[j - 1], what + ", Krylov vector " + std::to_string(j));
+        const double mapped_norm = std::sqrt(w.dot(w));
+        for (unsigned int pass = 0; pass < 2; ++pass) // Gram–Schmidt twice: the basis stays orthonormal
+          for (unsigned int i = 0; i < j; ++i)
+            {
+              const double h = V[i].dot(w);
+              H(i, j - 1) += h;
+              w.add(-h, V[i]);
+            }
+        H(j, j - 1) = std::sqrt(w.dot(w));
+        modes       = of_seed(ritz_modes(H, j, V));
+        const bool found = !modes.empty();
+        const double sigma = found ? std::log(std::abs(modes[0].multiplier)) / map_time : 0.0;
+        statistics.add_value("wavenumber", m);
+        statistics.add_value("odd", odd ? 1 : 0);
+        statistics.add_value("Krylov dimension", j);
+        statistics.add_value("norm of the mapped vector", mapped_norm);
+        statistics.add_value("leading growth rate", sigma);
+        statistics.add_value("leading frequency", found ? modes[0].frequency : 0.0);
+        statistics.add_value("leading residual", found ? modes[0].residual : 1.0);
+        statistics.add_value("wall time", wall_timer.wall_time());
+        statistics.end_row();
+        pcout << "    " << what << ", Krylov dimension " << j << ": ";
+        if (found)
+          pcout << "σ = " << std::setprecision(6) << sigma << ", Ω = " << modes[0].frequency << ", residual "
+                << std::setprecision(2) << std::scientific << modes[0].residual << std::defaultfloat << std::endl;
+        else
+          pcout << "no Ritz vector of this wavenumber and parity yet" << std::endl;
+        if ((found && modes[0].residual < residual_tolerance) || H(j, j - 1) < 1e-12 * mapped_norm)
+          break;
+        V.push_back(w);
+        V.back().scale(1 / H(j, j - 1));
+      }
+    modes.resize(std::min<std::size_t>(modes.size(), n_reported));
+    return modes;
+  }
+
+  void
+  StabilityScene::write_rows(const unsigned int m, const bool odd, const std::vector<Mode> &modes) const
+  {
+    if (Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+    std::ofstream csv(spectrum_file, std::ios::app);
+    csv << std::setprecision(8);
+    for (const Mode &mode : modes)
+      csv << mode.m << ',' << (mode.odd ? "odd" : "even") << ',' << std::log(std::abs(mode.multiplier)) / map_time
+          << ',' << mode.frequency << ',' << std::abs(mode.multiplier) << ',' << std::arg(mode.multiplier) << ','
+          << mode.residual << ',' << mode.purity << ',' << m << ',' << (odd ? "odd" : "even") << '\n';
+  }
+
+  void
+  StabilityScene::run()
+  {
+    model.setup();
+    axis   = model.initial_rotation_axis();
+    centre = Point<3>(geometry.measure().centre_of_mass);
+    base   = model.accepted_state();
+    if (n_settling_steps > 0)
+      {
+        pcout << "-- settling: " << n_settling_steps << " steps of the unperturbed model" << std::endl;
+        base = advanced(base, n_settling_steps, "the settling");
+      }
+    positions  = std::make_unique<NodalVectorField>(geometry.dof_handler(), 0, geometry.mapping());
+    velocities = std::make_unique<NodalVectorField>(model.dof_handler(),
+                                                    FluidDeformableSurface::velocity_component,
+                                                    geometry.mapping());
+    pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ; the time-" << map_time
+          << " map is " << n_steps << " steps of τ = " << tau << (bdf2 ? " (the first in four, τ/8 to τ/2)" : "")
+          << std::endl;
+
+    base_end                      = advanced(base, n_steps, "the equilibrium");
+    const auto [theta, distance] = positions->fit_rotation(base.position, base_end.position, axis, centre);
+    const double radius          = std::sqrt(base.target_area / (4 * numbers::PI));
+    RigidMotion  turn_back;
+    turn_back.rotation = -theta * axis;
+    back_rotation      = turn_back.rotation_over(1.0);
+    node_rotation_rate = theta / map_time;
+    const double drift = distance / (radius * map_time);
+    pcout << "-- the unperturbed map: the nodes turn at " << std::setprecision(6) << node_rotation_rate
+          << " (the equilibrium's ω = " << model.initial_angular_velocity() << ") and drift beyond that at "
+          << std::setprecision(2) << std::scientific << drift << " R per unit time" << std::defaultfloat << std::endl;
+    if (!(drift <= equilibrium_tolerance))
+      {
+        std::ostringstream msg;
+        msg << (parameter_file_name().empty() ? std::string("parameters") : parameter_file_name())
+            << ": the start is not an equilibrium of the discrete model: its nodes drift beyond a rigid rotation at "
+            << std::setprecision(3) << drift << " R per unit time, above 'stability/equilibrium tolerance' = "
+            << equilibrium_tolerance << "; expected an equilibrium (geometry/shape = equilibrium with its ω, a finer "
+            << "'geometry/refinement' or 'equilibrium/*' settings that converge).";
+        throw InputError(msg.str());
+      }
+
+    spectrum_file = output.directory() + "spectrum.csv";
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::ofstream csv(spectrum_file);
+        csv << "m,parity,growth rate,frequency,multiplier modulus,multiplier argument,residual,purity,seed m,"
+               "seed parity\n";
+      }
+    std::vector<std::string> unconverged;
+    for (const unsigned int m : wavenumbers)
+      for (const bool odd : parities)
+        {
+          const std::vector<Mode> modes = arnoldi(m, odd);
+          write_rows(m, odd, modes);
+          for (const Mode &mode : modes)
+            pcout << "      μ = " << std::setprecision(6) << mode.multiplier << ": σ = "
+                  << std::log(std::abs(mode.multiplier)) / map_time << ", Ω = " << mode.frequency << ", m = " << mode.m
+                  << (mode.odd ? " odd" : " even") << " (purity " << std::setprecision(3) << mode.purity
+                  << "), residual " << std::setprecision(2) << std::scientific << mode.residual << std::defaultfloat
+                  << std::endl;
+          if (modes.empty() || !(modes[0].residual < residual_tolerance))
+            {
+              std::ostringstream entry;
+              entry << "m = " << m << (odd ? " odd" : " even") << " (";
+              if (modes.empty())
+                entry << "no Ritz vector of this wavenumber and parity";
+              else
+                entry << "residual " << std::setprecision(3) << modes[0].residual;
+              entry << ")";
+              unconverged.push_back(entry.str());
+            }
+        }
+    pcout << "-- spectrum written to " << spectrum_file << std::endl;
+    if (!unconverged.empty())
+      {
+        std::ostringstream msg;
+        msg << "the leading eigenvalue of " << unconverged.front();
+        for (unsigned int i = 1; i < unconverged.size(); ++i)
+          msg << (i + 1 == unconverged.size() ? " and of " : ", of ") << unconverged[i];
+        msg << " did not reach 'stability/residual tolerance' " << residual_tolerance
+            << " at the maximum Krylov dimension " << max_krylov;
+        throw RunFailed(msg.str(),
+                        "all rows are in " + spectrum_file + " (column residual); raise 'stability/maximum Krylov "
+                        "dimension' or 'stability/map time'");
+      }
+  }
+} // namespace FluidSurface

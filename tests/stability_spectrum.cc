@@ -1,0 +1,88 @@
+// Scene stability on a coarse mesh (refinement 2): the rotating oblate equilibrium of prm/stability_oblate.prm,
+// m = 2 even only. Its leading eigenvalue pair is the oblate's instability: σ = 2.573 and co-rotating frequency
+// −2.54 at this refinement (the seeded nonlinear run gives 2.567 and −2.537 at refinement 3, benchmarks/spectrum).
+// Printed: the leading row of spectrum.csv rounded, and whether σ is within 2 % of the seeded run's. Then the same
+// with at most 3 Krylov vectors: the eigenvalue cannot converge, the run ends with exit status 1 and one line, and
+// spectrum.csv keeps its rows. About 30 s.
+#include <deal.II/base/mpi.h>
+
+#include <fluid_surface/scenes/run_program.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace FluidSurface;
+
+namespace
+{
+  /// Runs the oblate's m = 2 even with at most @p krylov vectors in @p directory; returns the exit status and the
+  /// rows of spectrum.csv (split at commas).
+  std::pair<int, std::vector<std::vector<std::string>>>
+  spectrum(const std::string &directory, const unsigned int krylov, std::string &message)
+  {
+    std::filesystem::remove_all(directory);
+    const std::string file = directory + ".prm";
+    std::ofstream(file)
+      << "subsection model\n  set scene = stability\nend\n"
+         "subsection geometry\n  set shape = equilibrium\n  set refinement = 2\n  set position degree = 2\nend\n"
+         "subsection equilibrium\n  set area = 12.600857094577847\n  set reduced volume = 0.7549530890154922\n"
+         "  set branch = oblate\n  set Be = 1\n  set angular momentum = 46.64242839801514\nend\n"
+         "subsection flow\n  set Re = 1\n  set conserve momenta = true\nend\n"
+         "subsection initial state\n  set equilibrium rotation = true\nend\n"
+         "subsection time stepping\n  set time step = 0.02\n  set scheme = BDF2\nend\n"
+         "subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n  set apply = always\nend\n"
+         "subsection mesh redistribution\n  set tangential law = membrane\nend\n"
+         "subsection stability\n  set wavenumbers = 2\n  set parities = even\n  set map time = 0.3\n"
+         "  set maximum Krylov dimension = "
+      << krylov
+      << "\nend\n"
+         "subsection output\n  set output directory = "
+      << directory << "\n  set report wall time = false\nend\n";
+    std::ostringstream screen, errors;
+    const int          status = run_program({file}, screen, errors, MPI_COMM_WORLD);
+    message                   = errors.str();
+    std::vector<std::vector<std::string>> rows;
+    std::ifstream                         csv(directory + "/spectrum.csv");
+    for (std::string line; std::getline(csv, line);)
+      {
+        std::vector<std::string> fields;
+        std::istringstream       split(line);
+        for (std::string field; std::getline(split, field, ',');)
+          fields.push_back(field);
+        rows.push_back(fields);
+      }
+    return {status, rows};
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::string                              message;
+  const auto [status, rows] = spectrum("results_spectrum", 20, message);
+  std::cout << "exit status " << status << "\nheader: " << (rows.empty() ? std::string() : rows[0][0] + ", " +
+                                                               rows[0][1] + ", " + rows[0][2] + ", " + rows[0][3])
+            << std::endl;
+  if (rows.size() > 1)
+    {
+      const double sigma = std::stod(rows[1][2]), frequency = std::stod(rows[1][3]);
+      std::cout << std::fixed << std::setprecision(2) << "leading: m = " << rows[1][0] << " " << rows[1][1]
+                << ", σ = " << sigma << ", frequency = " << frequency << ", converged: "
+                << (std::stod(rows[1][6]) < 1e-3 ? "yes" : "no") << ", purity above 0.9: "
+                << (std::stod(rows[1][7]) > 0.9 ? "yes" : "no") << "\nσ within 2 % of the seeded run's 2.567: "
+                << (std::abs(sigma / 2.567 - 1) < 0.02 ? "yes" : "no") << std::endl;
+    }
+
+  const auto [short_status, short_rows] = spectrum("results_short", 3, message);
+  const std::string prefix              = "fluid_surface: error: ";
+  std::cout << "at most 3 Krylov vectors: exit status " << short_status << ", rows kept " << short_rows.size() - 1
+            << "\n"
+            << (message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message) << std::flush;
+}
