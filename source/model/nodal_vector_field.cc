@@ -1,10 +1,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <fluid_surface/geometry/azimuthal_harmonic.h>
 #include <fluid_surface/model/nodal_vector_field.h>
-#include <fluid_surface/model/rigid_motion.h>
 
 #include <cmath>
 #include <map>
@@ -67,11 +67,8 @@ namespace FluidSurface
     out.compress(VectorOperation::insert);
   }
 
-  std::pair<double, double>
-  NodalVectorField::fit_rotation(const VectorType   &from,
-                                 const VectorType   &to,
-                                 const Tensor<1, 3> &axis,
-                                 const Point<3>     &centre) const
+  std::pair<Tensor<2, 3>, double>
+  NodalVectorField::fit_rotation(const VectorType &from, const VectorType &to, const Point<3> &centre) const
   {
     const auto value = [&](const VectorType &v, const std::array<types::global_dof_index, 3> &dofs) {
       Tensor<1, 3> x;
@@ -79,23 +76,36 @@ namespace FluidSurface
         x[c] = v[dofs[c]] - centre[c];
       return x;
     };
-    // θ maximizes Σ (Q(θ) x₀)·x₁ = Σ cos θ (x₀⊥·x₁⊥) + sin θ (e·(x₀ × x₁)) + const.
-    double sums[2] = {0, 0};
+    // Kabsch: with H = Σ x₀ x₁ᵀ = U S Vᵀ, Q = V diag(1, 1, det(V Uᵀ)) Uᵀ maximizes Σ (Q x₀)·x₁.
+    double H[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
     for (const auto &dofs : triples)
       {
         const Tensor<1, 3> x0 = value(from, dofs), x1 = value(to, dofs);
-        sums[0] += x0 * x1 - (x0 * axis) * (x1 * axis);
-        sums[1] += axis * cross_product_3d(x0, x1);
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            H[3 * i + j] += x0[i] * x1[j];
       }
-    Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
-    const double       theta = std::atan2(sums[1], sums[0]);
-    RigidMotion turn;
-    turn.rotation           = theta * axis;
-    const Tensor<2, 3> Q     = turn.rotation_over(1.0);
+    Utilities::MPI::sum(ArrayView<const double>(H, 9), communicator, ArrayView<double>(H, 9));
+    LAPACKFullMatrix<double> svd(3, 3);
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        svd(i, j) = H[3 * i + j];
+    svd.compute_svd();
+    const LAPACKFullMatrix<double> &U = svd.get_svd_u(), &Vt = svd.get_svd_vt();
+    Tensor<2, 3>                    u, v;
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        {
+          u[i][j] = U(i, j);
+          v[i][j] = Vt(j, i);
+        }
+    Tensor<2, 3> d = unit_symmetric_tensor<3>();
+    d[2][2]        = determinant(v * transpose(u)) < 0 ? -1 : 1;
+    const Tensor<2, 3> Q = v * d * transpose(u);
     double             distance = 0;
     for (const auto &dofs : triples)
       distance = std::max(distance, (Q * value(from, dofs) - value(to, dofs)).norm());
-    return {theta, Utilities::MPI::max(distance, communicator)};
+    return {Q, Utilities::MPI::max(distance, communicator)};
   }
 
   std::vector<std::array<double, 2>>
@@ -156,5 +166,24 @@ namespace FluidSurface
             content[w][parity] += (sums[i] * sums[i] + sums[i + 1] * sums[i + 1]) / (n_nodes * n_nodes);
           }
     return content;
+  }
+
+  double
+  NodalVectorField::normal_share(const VectorType &re, const VectorType &im, const VectorType &normal) const
+  {
+    double sums[2] = {0, 0};
+    for (const auto &dofs : triples)
+      {
+        std::complex<double> normal_part;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            const std::complex<double> z(re[dofs[c]], im[dofs[c]]);
+            normal_part += z * normal[dofs[c]];
+            sums[1] += std::norm(z);
+          }
+        sums[0] += std::norm(normal_part);
+      }
+    Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
+    return sums[1] > 0 ? sums[0] / sums[1] : 0;
   }
 } // namespace FluidSurface

@@ -2,6 +2,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <fluid_surface/geometry/azimuthal_harmonic.h>
+#include <fluid_surface/io/checkpoint.h>
 #include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/io/run_stopped.h>
 #include <fluid_surface/scenes/stability_scene.h>
@@ -49,6 +50,18 @@ namespace FluidSurface
                       "T, 0 < T ≤ 100, of the time-T map whose multipliers μ give σ = ln|μ|/T and Ω = arg μ/T; a multiple of "
                       "time stepping/time step. Frequencies |Ω| < π/T are resolved; a larger T separates the "
                       "leading eigenvalues more per Krylov vector.");
+    prm.declare_entry("base state",
+                      "equilibrium",
+                      Patterns::Selection("equilibrium|checkpoint"),
+                      "The state whose spectrum is computed. equilibrium: the rotating axisymmetric equilibrium of "
+                      "geometry/shape = equilibrium, one Arnoldi run per wavenumber and parity. checkpoint: the last "
+                      "checkpoint of a run of scene full (an end state, rotating rigidly and not axisymmetric), one "
+                      "Arnoldi run from all modes m ≤ 4 at once, the leading `eigenvalues per wavenumber` reported.");
+    prm.declare_entry("checkpoint directory",
+                      "",
+                      Patterns::Anything(),
+                      "With base state = checkpoint: the output directory of that run (its subdirectory "
+                      "checkpoint/), run with the geometry and model of this file.");
     prm.declare_entry("settling time",
                       "0",
                       RealRange::closed(0, 1e6),
@@ -88,13 +101,21 @@ namespace FluidSurface
   void
   StabilityScene::parse_parameters(ParameterHandler &prm)
   {
+    prm.enter_subsection("stability");
+    from_checkpoint      = prm.get("base state") == "checkpoint";
+    checkpoint_directory = prm.get("checkpoint directory");
+    prm.leave_subsection();
+    if (from_checkpoint && checkpoint_directory.empty())
+      throw_invalid_entry("stability/checkpoint directory",
+                          "",
+                          "the output directory of a run of scene full with base state = checkpoint");
     TimeStepper time;
     time.parse_parameters(prm);
     tau  = time.step_size();
     bdf2 = time.bdf2();
     model.parse_parameters(prm, time.maximum_step_size());
     model.set_bdf2(time.bdf2());
-    if (geometry.equilibrium_shape() == nullptr)
+    if (!from_checkpoint && geometry.equilibrium_shape() == nullptr)
       {
         prm.enter_subsection("geometry");
         const std::string shape = prm.get("shape");
@@ -104,12 +125,12 @@ namespace FluidSurface
                             "equilibrium with scene stability (the rotating state whose spectrum is computed)");
       }
     prm.enter_subsection("initial state");
-    if (!prm.get_bool("equilibrium rotation"))
+    if (!from_checkpoint && !prm.get_bool("equilibrium rotation"))
       throw_invalid_entry("initial state/equilibrium rotation",
                           "false",
                           "true with scene stability (the equilibrium rotates rigidly with its ω)");
     for (const std::string entry : {"shape perturbation", "velocity perturbation"})
-      if (prm.get_double(entry) != 0)
+      if (!from_checkpoint && prm.get_double(entry) != 0)
         throw_invalid_entry("initial state/" + entry,
                             prm.get(entry),
                             "0 with scene stability (it perturbs the equilibrium itself, one mode at a time)");
@@ -208,9 +229,23 @@ namespace FluidSurface
   StabilityScene::Perturbation
   StabilityScene::seed(const unsigned int m, const bool odd) const
   {
-    const AzimuthalHarmonic harmonic(axis, m, odd);
-    Perturbation            v = zero();
-    positions->radial_field(centre, [&](const Tensor<1, 3> &x) { return harmonic.normalized_real_part(x); }, v.position);
+    std::vector<AzimuthalHarmonic> harmonics;
+    if (from_checkpoint) // every mode of m ≤ 4 at once: the end state has no azimuthal classes
+      for (unsigned int k = 0; k <= 4; ++k)
+        for (const bool parity : {false, true})
+          harmonics.emplace_back(axis, k, parity);
+    else
+      harmonics.emplace_back(axis, m, odd);
+    Perturbation v = zero();
+    positions->radial_field(
+      centre,
+      [&](const Tensor<1, 3> &x) {
+        double delta = 0;
+        for (const AzimuthalHarmonic &h : harmonics)
+          delta += h.normalized_real_part(x);
+        return delta;
+      },
+      v.position);
     v.scale(1 / std::sqrt(v.dot(v)));
     return v;
   }
@@ -289,6 +324,7 @@ namespace FluidSurface
         mode.m          = 0;
         mode.odd        = false;
         mode.purity     = 0;
+        mode.normal_share = 0;
         mode.frequency  = std::arg(mu) / map_time;
           {
             Perturbation re = zero(), im = zero();
@@ -314,14 +350,15 @@ namespace FluidSurface
                       mode.odd = p == 1;
                     }
                 }
-            mode.m      = std::abs(best_k);
+            mode.normal_share = positions->normal_share(re.position, im.position, base_normal);
+            mode.m            = std::abs(best_k);
             mode.purity = total > 0 ? best / total : 0;
             // z ∝ e^{imφ} with μ = e^{(σ + iΩ)T}: the real mode ∝ cos(mφ + Ωt), arg Q_m turns at −Ω in the frame
             // of the nodes, which turns at θ/T; the body turns at ω. Co-rotating: minus m(ω − θ/T), modulo 2π/T.
             if (best_k > 0)
               mode.frequency = -mode.frequency;
             const double period = 2 * numbers::PI / map_time;
-            double       f      = mode.frequency - mode.m * (model.initial_angular_velocity() - node_rotation_rate);
+            double       f      = mode.frequency - mode.m * (body_rotation_rate - node_rotation_rate);
             f -= period * std::round(f / period);
             mode.frequency = f;
           }
@@ -336,15 +373,28 @@ namespace FluidSurface
   std::vector<StabilityScene::Mode>
   StabilityScene::arnoldi(const unsigned int m, const bool odd)
   {
-    const std::string what = "m = " + std::to_string(m) + (odd ? " odd" : " even");
+    const std::string what = from_checkpoint ? std::string("the end state") :
+                                               "m = " + std::to_string(m) + (odd ? " odd" : " even");
     // The modes of the seed's wavenumber and parity, by |μ|; the Krylov space also holds others (the cube-sphere
-    // couples m and m ± 4), which their own seeds find.
+    // couples m and m ± 4), which their own seeds find. The end state: all modes.
     const auto of_seed = [&](const std::vector<Mode> &all) {
       std::vector<Mode> selected;
       for (const Mode &mode : all)
-        if (mode.m == m && mode.odd == odd)
+        if (from_checkpoint || (mode.m == m && mode.odd == odd))
           selected.push_back(mode);
       return selected;
+    };
+    // Converged: the leading mode (the end state: the leading `eigenvalues per wavenumber` modes).
+    const auto converged = [&](const std::vector<Mode> &selected) {
+      if (selected.empty())
+        return false;
+      const std::size_t n = from_checkpoint ? std::min<std::size_t>(selected.size(), n_reported) : 1;
+      if (from_checkpoint && selected.size() < n_reported)
+        return false;
+      for (std::size_t i = 0; i < n; ++i)
+        if (!(selected[i].residual < residual_tolerance))
+          return false;
+      return true;
     };
     std::vector<Perturbation> V{seed(m, odd)};
     FullMatrix<double>        H(max_krylov + 1, max_krylov);
@@ -363,6 +413,7 @@ namespace FluidSurface
         H(j, j - 1) = std::sqrt(w.dot(w));
         modes       = of_seed(ritz_modes(H, j, V));
         const bool found = !modes.empty();
+        unconverged_leading = !converged(modes);
         const double sigma = found ? std::log(std::abs(modes[0].multiplier)) / map_time : 0.0;
         statistics.add_value("wavenumber", m);
         statistics.add_value("odd", odd ? 1 : 0);
@@ -379,7 +430,7 @@ namespace FluidSurface
                 << std::setprecision(2) << std::scientific << modes[0].residual << std::defaultfloat << std::endl;
         else
           pcout << "no Ritz vector of this wavenumber and parity yet" << std::endl;
-        if ((found && modes[0].residual < residual_tolerance) || H(j, j - 1) < 1e-12 * mapped_norm)
+        if (converged(modes) || H(j, j - 1) < 1e-12 * mapped_norm)
           break;
         V.push_back(w);
         V.back().scale(1 / H(j, j - 1));
@@ -398,13 +449,36 @@ namespace FluidSurface
     for (const Mode &mode : modes)
       csv << mode.m << ',' << (mode.odd ? "odd" : "even") << ',' << std::log(std::abs(mode.multiplier)) / map_time
           << ',' << mode.frequency << ',' << std::abs(mode.multiplier) << ',' << std::arg(mode.multiplier) << ','
-          << mode.residual << ',' << mode.purity << ',' << m << ',' << (odd ? "odd" : "even") << '\n';
+          << mode.residual << ',' << mode.purity << ',' << mode.normal_share << ','
+          << (from_checkpoint ? std::string("all") : std::to_string(m)) << ','
+          << (from_checkpoint ? "all" : (odd ? "odd" : "even")) << '\n';
   }
 
   void
   StabilityScene::run()
   {
-    model.setup();
+    if (from_checkpoint)
+      {
+        Checkpoint checkpoint;
+        checkpoint.initialize(checkpoint_directory + "/checkpoint/", communicator);
+        checkpoint.set_resume_mode(Checkpoint::Resume::automatic);
+        if (!checkpoint.find(pcout.get_stream()))
+          throw_invalid_entry("stability/checkpoint directory",
+                              checkpoint_directory,
+                              "the output directory of a run of scene full with a usable checkpoint (its "
+                              "subdirectory checkpoint/), run with the geometry and model of this file");
+        const CheckpointData data = checkpoint.read();
+        if (data.get_string("simulation/geometry") != geometry.description())
+          throw_invalid_entry("stability/checkpoint directory",
+                              checkpoint_directory,
+                              "a run on this file's geometry ('" + geometry.description() + "'; the checkpoint has '" +
+                                data.get_string("simulation/geometry") + "')");
+        model.load(data);
+        pcout << "-- the base state: " << checkpoint.last_slot() << ", t = " << data.get_double("time stepping/time")
+              << std::endl;
+      }
+    else
+      model.setup();
     axis   = model.initial_rotation_axis();
     centre = Point<3>(geometry.measure().centre_of_mass);
     base   = model.accepted_state();
@@ -421,16 +495,23 @@ namespace FluidSurface
           << " map is " << n_steps << " steps of τ = " << tau << (bdf2 ? " (the first in four, τ/8 to τ/2)" : "")
           << std::endl;
 
-    base_end                      = advanced(base, n_steps, "the equilibrium");
-    const auto [theta, distance] = positions->fit_rotation(base.position, base_end.position, axis, centre);
-    const double radius          = std::sqrt(base.target_area / (4 * numbers::PI));
-    RigidMotion  turn_back;
-    turn_back.rotation = -theta * axis;
-    back_rotation      = turn_back.rotation_over(1.0);
-    node_rotation_rate = theta / map_time;
+    model.restart_from(base);
+    base_normal                   = geometry.normal_field();
+    base_end                        = advanced(base, n_steps, "the base state");
+    const auto [turn, distance]     = positions->fit_rotation(base.position, base_end.position, centre);
+    const double radius             = std::sqrt(base.target_area / (4 * numbers::PI));
+    back_rotation                   = transpose(turn);
+    // The angle and axis of the nodes' turn: sin θ e = the axial vector of (Q − Qᵀ)/2, cos θ = (tr Q − 1)/2.
+    const Tensor<1, 3> axial({0.5 * (turn[2][1] - turn[1][2]), 0.5 * (turn[0][2] - turn[2][0]),
+                              0.5 * (turn[1][0] - turn[0][1])});
+    const double       theta = std::atan2(axial.norm(), 0.5 * (trace(turn) - 1));
+    if (from_checkpoint && axial.norm() > 1e-8)
+      axis = axial / axial.norm(); // the end state turns with its nodes about its own axis
+    node_rotation_rate = (axial * axis < 0 ? -theta : theta) / map_time;
+    body_rotation_rate = from_checkpoint ? node_rotation_rate : model.initial_angular_velocity();
     const double drift = distance / (radius * map_time);
     pcout << "-- the unperturbed map: the nodes turn at " << std::setprecision(6) << node_rotation_rate
-          << " (the equilibrium's ω = " << model.initial_angular_velocity() << ") and drift beyond that at "
+          << " about (" << axis << "), the body at " << body_rotation_rate << "; they drift beyond that at "
           << std::setprecision(2) << std::scientific << drift << " R per unit time" << std::defaultfloat << std::endl;
     if (!(drift <= equilibrium_tolerance))
       {
@@ -447,12 +528,12 @@ namespace FluidSurface
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
         std::ofstream csv(spectrum_file);
-        csv << "m,parity,growth rate,frequency,multiplier modulus,multiplier argument,residual,purity,seed m,"
+        csv << "m,parity,growth rate,frequency,multiplier modulus,multiplier argument,residual,purity,normal share,seed m,"
                "seed parity\n";
       }
     std::vector<std::string> unconverged;
-    for (const unsigned int m : wavenumbers)
-      for (const bool odd : parities)
+    for (const unsigned int m : from_checkpoint ? std::vector<unsigned int>{0} : wavenumbers)
+      for (const bool odd : from_checkpoint ? std::vector<bool>{false} : parities)
         {
           const std::vector<Mode> modes = arnoldi(m, odd);
           write_rows(m, odd, modes);
@@ -460,12 +541,15 @@ namespace FluidSurface
             pcout << "      μ = " << std::setprecision(6) << mode.multiplier << ": σ = "
                   << std::log(std::abs(mode.multiplier)) / map_time << ", Ω = " << mode.frequency << ", m = " << mode.m
                   << (mode.odd ? " odd" : " even") << " (purity " << std::setprecision(3) << mode.purity
-                  << "), residual " << std::setprecision(2) << std::scientific << mode.residual << std::defaultfloat
+                  << ", normal share " << mode.normal_share << "), residual " << std::setprecision(2) << std::scientific
+                  << mode.residual << std::defaultfloat
                   << std::endl;
-          if (modes.empty() || !(modes[0].residual < residual_tolerance))
+          if (unconverged_leading)
             {
               std::ostringstream entry;
-              entry << "m = " << m << (odd ? " odd" : " even") << " (";
+              entry << (from_checkpoint ? std::string("the end state") :
+                                          "m = " + std::to_string(m) + (odd ? " odd" : " even"))
+                    << " (";
               if (modes.empty())
                 entry << "no Ritz vector of this wavenumber and parity";
               else

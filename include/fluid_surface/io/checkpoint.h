@@ -132,6 +132,12 @@ namespace FluidSurface
     {
       return resume;
     }
+    /// Sets `resume` (scene stability reads the newest checkpoint of another run: automatic).
+    void
+    set_resume_mode(const Resume mode)
+    {
+      resume = mode;
+    }
     /// Whether checkpoints are written at all (by steps or by wall time).
     bool
     enabled() const

@@ -39,15 +39,11 @@ namespace FluidSurface
                        VectorType                 &out) const;
 
     /**
-     * The angle θ of the rotation about the unit vector @p axis through @p centre that best carries the nodal
-     * values @p from (positions) onto @p to (least squares in the plane normal to the axis), and the largest
-     * distance of a node of to from the rotated from, over all ranks.
+     * The rotation Q about @p centre that best carries the nodal values @p from (positions) onto @p to (least
+     * squares, Kabsch), and the largest distance of a node of @p to from the rotated @p from, over all ranks.
      */
-    std::pair<double, double>
-    fit_rotation(const VectorType            &from,
-                 const VectorType            &to,
-                 const dealii::Tensor<1, 3> &axis,
-                 const dealii::Point<3>     &centre) const;
+    std::pair<dealii::Tensor<2, 3>, double>
+    fit_rotation(const VectorType &from, const VectorType &to, const dealii::Point<3> &centre) const;
 
     /**
      * The field ε δ(x̂) x̂ on the nodes (0 on the other DoFs of @p out, owned): x̂ the unit vector from @p centre
@@ -83,6 +79,14 @@ namespace FluidSurface
                       const dealii::Tensor<1, 3> &axis,
                       const dealii::Point<3>     &centre,
                       const unsigned int          M) const;
+
+    /**
+     * Σ|z·n|² / Σ|z|² over the nodes for the complex field z = @p re + i @p im and the unit nodal field @p normal
+     * (ghosted): the share of a displacement of the surface that is normal to it, i.e. changes the shape (the rest
+     * moves nodes along the surface). Over all ranks.
+     */
+    double
+    normal_share(const VectorType &re, const VectorType &im, const VectorType &normal) const;
 
   private:
     std::vector<std::array<dealii::types::global_dof_index, 3>> triples; ///< the DoFs of the locally owned nodes

@@ -86,6 +86,7 @@ namespace FluidSurface
       unsigned int         m;          ///< the wavenumber of the largest azimuthal content
       bool                 odd;        ///< its parity
       double               purity;     ///< the share of that content in the whole
+      double               normal_share; ///< the share of δX normal to the surface (NodalVectorField::normal_share())
       double frequency; ///< the co-rotating frequency of arg Q_m (signed, in (−π/T, π/T])
     };
 
@@ -133,8 +134,13 @@ namespace FluidSurface
 
     SurfaceState                      base;     ///< x_eq
     SurfaceState                      base_end; ///< Φ_T(x_eq)
+    VectorType                        base_normal; ///< the nodal normal ñ of x_eq
     dealii::Tensor<2, 3>              back_rotation; ///< R(−θ)
     double                            node_rotation_rate = 0; ///< θ/T
+    double body_rotation_rate = 0; ///< ω of the equilibrium; that of the nodes for an end state (carried nodes)
+    bool        from_checkpoint = false; ///< `base state = checkpoint`
+    std::string checkpoint_directory;    ///< `checkpoint directory`
+    bool        unconverged_leading = false; ///< the last arnoldi() ended without convergence
     dealii::Tensor<1, 3>              axis;
     dealii::Point<3>                  centre;
     std::unique_ptr<NodalVectorField> positions, velocities;
