@@ -5,7 +5,9 @@
 
 #include <fluid_surface/geometry/azimuthal_harmonic.h>
 #include <fluid_surface/model/nodal_vector_field.h>
+#include <fluid_surface/model/rigid_motion.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -68,7 +70,10 @@ namespace FluidSurface
   }
 
   std::pair<Tensor<2, 3>, double>
-  NodalVectorField::fit_rotation(const VectorType &from, const VectorType &to, const Point<3> &centre) const
+  NodalVectorField::fit_rotation(const VectorType &from,
+                                 const VectorType &to,
+                                 const Point<3>   &centre,
+                                 const VectorType &normal) const
   {
     const auto value = [&](const VectorType &v, const std::array<types::global_dof_index, 3> &dofs) {
       Tensor<1, 3> x;
@@ -104,8 +109,73 @@ namespace FluidSurface
     const Tensor<2, 3> Q = v * d * transpose(u);
     double             distance = 0;
     for (const auto &dofs : triples)
-      distance = std::max(distance, (Q * value(from, dofs) - value(to, dofs)).norm());
+      {
+        Tensor<1, 3> n;
+        for (unsigned int c = 0; c < 3; ++c)
+          n[c] = normal[dofs[c]];
+        distance = std::max(distance, std::abs((value(from, dofs) - transpose(Q) * value(to, dofs)) * n));
+      }
     return {Q, Utilities::MPI::max(distance, communicator)};
+  }
+
+  std::pair<double, double>
+  NodalVectorField::fit_shape_rotation(const VectorType   &from,
+                                       const VectorType   &to,
+                                       const Point<3>     &centre,
+                                       const VectorType   &normal,
+                                       const Tensor<1, 3> &axis,
+                                       const double        guess) const
+  {
+    // The normal distances at θ: their sum of squares and their largest value, over all ranks.
+    const auto distances = [&](const double theta) {
+      RigidMotion turn;
+      turn.rotation           = -theta * axis;
+      const Tensor<2, 3> back = turn.rotation_over(1.0);
+      double             sum = 0, largest = 0;
+      for (const auto &dofs : triples)
+        {
+          Tensor<1, 3> x, y, n;
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              x[c] = from[dofs[c]] - centre[c];
+              y[c] = to[dofs[c]] - centre[c];
+              n[c] = normal[dofs[c]];
+            }
+          const double d = (x - back * y) * n;
+          sum += d * d;
+          largest = std::max(largest, std::abs(d));
+        }
+      return std::make_pair(Utilities::MPI::sum(sum, communicator), Utilities::MPI::max(largest, communicator));
+    };
+    // The turn is seen only through the normal part of the rotation field e × x: none on an axisymmetric surface,
+    // whose turn is that of its nodes (@p guess).
+    double sums[2] = {0, 0};
+    for (const auto &dofs : triples)
+      {
+        Tensor<1, 3> x, n;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            x[c] = from[dofs[c]] - centre[c];
+            n[c] = normal[dofs[c]];
+          }
+        const Tensor<1, 3> v = cross_product_3d(axis, x);
+        sums[0] += (v * n) * (v * n);
+        sums[1] += v * v;
+      }
+    Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
+    double theta = guess;
+    if (!(sums[0] > 1e-4 * sums[1]))
+      return {theta, distances(theta).second};
+    // Parabolic steps on shrinking brackets: the sum is smooth and nearly quadratic in θ near the turn.
+    for (const double width : {0.05, 0.005, 0.0005, 0.00005})
+      {
+        const double f0 = distances(theta - width).first, f1 = distances(theta).first,
+                     f2 = distances(theta + width).first;
+        const double curvature = f0 - 2 * f1 + f2;
+        if (curvature > 0)
+          theta += std::clamp(0.5 * width * (f0 - f2) / curvature, -width, width);
+      }
+    return {theta, distances(theta).second};
   }
 
   std::vector<std::array<double, 2>>

@@ -91,8 +91,9 @@ namespace FluidSurface
     prm.declare_entry("equilibrium tolerance",
                       "0.02",
                       RealRange::left_open(0, 1e6),
-                      "Largest drift rate, > 0, of the unperturbed map: the largest distance of a node of Φ_T(x_eq), "
-                      "turned back by the fitted angle, from x_eq, per radius R = √(A/4π) and unit time. Above it "
+                      "Largest drift rate, > 0, of the unperturbed map: the largest normal distance of a node of "
+                      "Φ_T(x_eq), turned back by the fitted rotation, from x_eq, per radius R = √(A/4π) and unit time "
+                      "(the nodes may slide along the surface). Above it "
                       "the start is not an equilibrium of the discrete model and the run ends (exit 2); the "
                       "interpolated equilibrium relaxes to the discrete one at a rate that falls with h.");
     prm.leave_subsection();
@@ -498,26 +499,41 @@ namespace FluidSurface
     model.restart_from(base);
     base_normal                   = geometry.normal_field();
     base_end                        = advanced(base, n_steps, "the base state");
-    const auto [turn, distance]     = positions->fit_rotation(base.position, base_end.position, centre);
-    const double radius             = std::sqrt(base.target_area / (4 * numbers::PI));
-    back_rotation                   = transpose(turn);
+    const auto [turn, node_distance] = positions->fit_rotation(base.position, base_end.position, centre, base_normal);
+    const double radius              = std::sqrt(base.target_area / (4 * numbers::PI));
     // The angle and axis of the nodes' turn: sin θ e = the axial vector of (Q − Qᵀ)/2, cos θ = (tr Q − 1)/2.
     const Tensor<1, 3> axial({0.5 * (turn[2][1] - turn[1][2]), 0.5 * (turn[0][2] - turn[2][0]),
                               0.5 * (turn[1][0] - turn[0][1])});
     const double       theta = std::atan2(axial.norm(), 0.5 * (trace(turn) - 1));
     if (from_checkpoint && axial.norm() > 1e-8)
-      axis = axial / axial.norm(); // the end state turns with its nodes about its own axis
+      axis = axial / axial.norm(); // the end state turns about its own axis
     node_rotation_rate = (axial * axis < 0 ? -theta : theta) / map_time;
-    body_rotation_rate = from_checkpoint ? node_rotation_rate : model.initial_angular_velocity();
+    double distance    = node_distance;
+    if (from_checkpoint)
+      {
+        // The vectors of a perturbation turn with the body, whose nodes may slide: its turn from its shape.
+        const auto [body_angle, shape_distance] = positions->fit_shape_rotation(
+          base.position, base_end.position, centre, base_normal, axis, node_rotation_rate * map_time);
+        body_rotation_rate = body_angle / map_time;
+        distance           = shape_distance;
+        RigidMotion turn_back;
+        turn_back.rotation = -body_angle * axis;
+        back_rotation      = turn_back.rotation_over(1.0);
+      }
+    else
+      {
+        body_rotation_rate = model.initial_angular_velocity();
+        back_rotation      = transpose(turn);
+      }
     const double drift = distance / (radius * map_time);
     pcout << "-- the unperturbed map: the nodes turn at " << std::setprecision(6) << node_rotation_rate
-          << " about (" << axis << "), the body at " << body_rotation_rate << "; they drift beyond that at "
+          << " about (" << axis << "), the body at " << body_rotation_rate << "; the shape moves beyond that at "
           << std::setprecision(2) << std::scientific << drift << " R per unit time" << std::defaultfloat << std::endl;
     if (!(drift <= equilibrium_tolerance))
       {
         std::ostringstream msg;
         msg << (parameter_file_name().empty() ? std::string("parameters") : parameter_file_name())
-            << ": the start is not an equilibrium of the discrete model: its nodes drift beyond a rigid rotation at "
+            << ": the start is not an equilibrium of the discrete model: its surface moves beyond a rigid rotation at "
             << std::setprecision(3) << drift << " R per unit time, above 'stability/equilibrium tolerance' = "
             << equilibrium_tolerance << "; expected an equilibrium (geometry/shape = equilibrium with its ω, a finer "
             << "'geometry/refinement' or 'equilibrium/*' settings that converge).";

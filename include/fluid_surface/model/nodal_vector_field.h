@@ -40,10 +40,30 @@ namespace FluidSurface
 
     /**
      * The rotation Q about @p centre that best carries the nodal values @p from (positions) onto @p to (least
-     * squares, Kabsch), and the largest distance of a node of @p to from the rotated @p from, over all ranks.
+     * squares, Kabsch), and the largest normal distance |(x − Qᵀy)·n| of a node y of @p to, turned back, from its
+     * node x of @p from, with @p normal the unit nodal normal of @p from (ghosted): how far the shape moved beyond
+     * the rotation (the nodes may also slide along it). Over all ranks.
      */
     std::pair<dealii::Tensor<2, 3>, double>
-    fit_rotation(const VectorType &from, const VectorType &to, const dealii::Point<3> &centre) const;
+    fit_rotation(const VectorType       &from,
+                 const VectorType       &to,
+                 const dealii::Point<3> &centre,
+                 const VectorType       &normal) const;
+
+    /**
+     * The angle θ of the rotation R about @p axis through @p centre that carries the surface @p from onto @p to:
+     * the minimizer of Σ ((x − R(θ)ᵀy)·n)² over the nodes (normal distances only, so that nodes sliding along the
+     * surface do not count), searched from @p guess; and the largest normal distance at θ. For a surface that is not
+     * axisymmetric about the axis (an end state): the turn of the body, when its nodes slide. On an axisymmetric
+     * surface (Σ((e × x)·n)² below 1e-4 Σ|e × x|²) the turn is not seen: θ = @p guess.
+     */
+    std::pair<double, double>
+    fit_shape_rotation(const VectorType           &from,
+                       const VectorType           &to,
+                       const dealii::Point<3>     &centre,
+                       const VectorType           &normal,
+                       const dealii::Tensor<1, 3> &axis,
+                       const double                guess) const;
 
     /**
      * The field ε δ(x̂) x̂ on the nodes (0 on the other DoFs of @p out, owned): x̂ the unit vector from @p centre
