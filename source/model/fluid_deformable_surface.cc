@@ -289,10 +289,16 @@ namespace FluidSurface
     const double anchor_time = step.redistribution.anchor_time;
     if (anchored || anchor_time < 0 || time < anchor_time)
       return false;
+    anchor();
+    return true;
+  }
+
+  void
+  FluidDeformableSurface::anchor()
+  {
     set_reference_surface(state.position);
     step.pull_fully();
     anchored = true;
-    return true;
   }
 
   void

@@ -166,8 +166,19 @@ namespace FluidSurface
     double theta = guess;
     if (!(sums[0] > 1e-4 * sums[1]))
       return {theta, distances(theta).second};
-    // Parabolic steps on shrinking brackets: the sum is smooth and nearly quadratic in θ near the turn.
-    for (const double width : {0.05, 0.005, 0.0005, 0.00005})
+    // A scan of ±0.5 rad about the nodes' turn (they may slide by that much behind the body), then parabolic steps
+    // on shrinking brackets: the sum is smooth and nearly quadratic in θ near the turn.
+    double best = distances(theta).first;
+    for (int k = -50; k <= 50; ++k)
+      {
+        const double f = distances(guess + 0.01 * k).first;
+        if (f < best)
+          {
+            best  = f;
+            theta = guess + 0.01 * k;
+          }
+      }
+    for (const double width : {0.005, 0.0005, 0.00005})
       {
         const double f0 = distances(theta - width).first, f1 = distances(theta).first,
                      f2 = distances(theta + width).first;

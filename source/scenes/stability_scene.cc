@@ -9,6 +9,7 @@
 #include <fluid_surface/time_stepping/time_stepper.h>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -62,6 +63,13 @@ namespace FluidSurface
                       Patterns::Anything(),
                       "With base state = checkpoint: the output directory of that run (its subdirectory "
                       "checkpoint/), run with the geometry and model of this file.");
+    prm.declare_entry("anchor the end state",
+                      "true",
+                      Patterns::Bool(),
+                      "With base state = checkpoint: anchor the mesh law at the loaded surface (what mesh "
+                      "redistribution/anchor time does: the membrane energy, with full weight, relative to that "
+                      "surface), so that it holds the nodes of the end state instead of letting them slide; with "
+                      "`settling time` for the nodes to settle.");
     prm.declare_entry("settling time",
                       "0",
                       RealRange::closed(0, 1e6),
@@ -85,9 +93,10 @@ namespace FluidSurface
     prm.declare_entry("residual tolerance",
                       "1e-3",
                       RealRange::left_open(0, 1),
-                      "Tolerance, 0 < tol ≤ 1: Arnoldi stops when the residual ‖Az − μz‖/|μ| of the leading Ritz value of the seed's "
-                      "wavenumber and parity is below it. One still above it at the maximum Krylov dimension is "
-                      "written with its residual, and the run ends with exit status 1 after the last wavenumber.");
+                      "Tolerance, 0 < tol ≤ 1: Arnoldi stops when the residual r = ‖Az − μz‖/|μ| of the leading Ritz value "
+                      "of the seed's wavenumber and parity is below it. One still above it at the maximum Krylov "
+                      "dimension is written with its residual; if its σ + ln(1/(1 − r))/T is negative it decays "
+                      "whatever its error (a warning), else the run ends with exit status 1 after the last wavenumber.");
     prm.declare_entry("equilibrium tolerance",
                       "0.02",
                       RealRange::left_open(0, 1e6),
@@ -105,6 +114,7 @@ namespace FluidSurface
     prm.enter_subsection("stability");
     from_checkpoint      = prm.get("base state") == "checkpoint";
     checkpoint_directory = prm.get("checkpoint directory");
+    anchor_end_state     = prm.get_bool("anchor the end state");
     prm.leave_subsection();
     if (from_checkpoint && checkpoint_directory.empty())
       throw_invalid_entry("stability/checkpoint directory",
@@ -475,6 +485,8 @@ namespace FluidSurface
                               "a run on this file's geometry ('" + geometry.description() + "'; the checkpoint has '" +
                                 data.get_string("simulation/geometry") + "')");
         model.load(data);
+        if (anchor_end_state)
+          model.anchor();
         pcout << "-- the base state: " << checkpoint.last_slot() << ", t = " << data.get_double("time stepping/time")
               << std::endl;
       }
@@ -535,8 +547,15 @@ namespace FluidSurface
         msg << (parameter_file_name().empty() ? std::string("parameters") : parameter_file_name())
             << ": the start is not an equilibrium of the discrete model: its surface moves beyond a rigid rotation at "
             << std::setprecision(3) << drift << " R per unit time, above 'stability/equilibrium tolerance' = "
-            << equilibrium_tolerance << "; expected an equilibrium (geometry/shape = equilibrium with its ω, a finer "
-            << "'geometry/refinement' or 'equilibrium/*' settings that converge).";
+            << equilibrium_tolerance;
+        if (from_checkpoint)
+          msg << " (its nodes turn at " << std::setprecision(4) << node_rotation_rate << ", the body at "
+              << body_rotation_rate << ": nodes that slide along a curved surface count too)"
+              << "; expected a steady state whose nodes turn with the body (a run that ends at its steady state, "
+              << "with 'mesh redistribution/anchor time' before its end so that the membrane energy holds the nodes).";
+        else
+          msg << "; expected an equilibrium (geometry/shape = equilibrium with its ω, a finer "
+              << "'geometry/refinement' or 'equilibrium/*' settings that converge).";
         throw InputError(msg.str());
       }
 
@@ -560,7 +579,17 @@ namespace FluidSurface
                   << ", normal share " << mode.normal_share << "), residual " << std::setprecision(2) << std::scientific
                   << mode.residual << std::defaultfloat
                   << std::endl;
-          if (unconverged_leading)
+          // A leading mode that has not converged still decays if σ plus the bound ln(1/(1 − r))/T on its error
+          // (r the relative residual) is negative: the question which modes grow is answered.
+          const double sigma_bound =
+            modes.empty() || !(modes[0].residual < 0.5) ?
+              std::numeric_limits<double>::infinity() :
+              (std::log(std::abs(modes[0].multiplier)) - std::log(1 - modes[0].residual)) / map_time;
+          if (unconverged_leading && sigma_bound < 0)
+            pcout << "    warning: the leading eigenvalue has not reached 'stability/residual tolerance' (residual "
+                  << std::setprecision(2) << std::scientific << modes[0].residual << std::defaultfloat
+                  << "), but decays: σ ≤ " << std::setprecision(3) << sigma_bound << std::endl;
+          else if (unconverged_leading)
             {
               std::ostringstream entry;
               entry << (from_checkpoint ? std::string("the end state") :

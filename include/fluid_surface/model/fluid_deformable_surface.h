@@ -70,6 +70,9 @@ namespace FluidSurface
      */
     bool
     accept(const double time);
+    /// Anchors the mesh law now (what `anchor time` does): S₀ becomes the accepted surface, with full weight.
+    void
+    anchor();
     /// Undoes the last advance() (geometry and fields).
     void
     restore_last_state();

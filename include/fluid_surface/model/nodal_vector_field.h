@@ -53,7 +53,7 @@ namespace FluidSurface
     /**
      * The angle θ of the rotation R about @p axis through @p centre that carries the surface @p from onto @p to:
      * the minimizer of Σ ((x − R(θ)ᵀy)·n)² over the nodes (normal distances only, so that nodes sliding along the
-     * surface do not count), searched from @p guess; and the largest normal distance at θ. For a surface that is not
+     * surface do not count), searched within ±0.5 rad of @p guess; and the largest normal distance at θ. For a surface that is not
      * axisymmetric about the axis (an end state): the turn of the body, when its nodes slide. On an axisymmetric
      * surface (Σ((e × x)·n)² below 1e-4 Σ|e × x|²) the turn is not seen: θ = @p guess.
      */

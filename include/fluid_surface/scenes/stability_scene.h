@@ -140,6 +140,7 @@ namespace FluidSurface
     double body_rotation_rate = 0; ///< ω of the equilibrium; that of the nodes for an end state (carried nodes)
     bool        from_checkpoint = false; ///< `base state = checkpoint`
     std::string checkpoint_directory;    ///< `checkpoint directory`
+    bool        anchor_end_state = true; ///< `anchor the end state`
     bool        unconverged_leading = false; ///< the last arnoldi() ended without convergence
     dealii::Tensor<1, 3>              axis;
     dealii::Point<3>                  centre;
