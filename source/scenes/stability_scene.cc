@@ -579,15 +579,21 @@ namespace FluidSurface
                   << ", normal share " << mode.normal_share << "), residual " << std::setprecision(2) << std::scientific
                   << mode.residual << std::defaultfloat
                   << std::endl;
-          // A leading mode that has not converged still decays if σ plus the bound ln(1/(1 − r))/T on its error
-          // (r the relative residual) is negative: the question which modes grow is answered.
+          // The first reported mode that has not converged (the leading one; of an end state, any of the
+          // reported). It still decays if σ plus the bound ln(1/(1 − r))/T on its error (r the relative residual)
+          // is negative: the question which modes grow is answered.
+          std::size_t first = 0;
+          if (from_checkpoint)
+            while (first + 1 < modes.size() && modes[first].residual < residual_tolerance)
+              ++first;
           const double sigma_bound =
-            modes.empty() || !(modes[0].residual < 0.5) ?
+            modes.empty() || !(modes[first].residual < 0.5) ?
               std::numeric_limits<double>::infinity() :
-              (std::log(std::abs(modes[0].multiplier)) - std::log(1 - modes[0].residual)) / map_time;
+              (std::log(std::abs(modes[first].multiplier)) - std::log(1 - modes[first].residual)) / map_time;
+          const std::string which = first == 0 ? "the leading eigenvalue" : "eigenvalue " + std::to_string(first + 1);
           if (unconverged_leading && sigma_bound < 0)
-            pcout << "    warning: the leading eigenvalue has not reached 'stability/residual tolerance' (residual "
-                  << std::setprecision(2) << std::scientific << modes[0].residual << std::defaultfloat
+            pcout << "    warning: " << which << " has not reached 'stability/residual tolerance' (residual "
+                  << std::setprecision(2) << std::scientific << modes[first].residual << std::defaultfloat
                   << "), but decays: σ ≤ " << std::setprecision(3) << sigma_bound << std::endl;
           else if (unconverged_leading)
             {
@@ -598,7 +604,7 @@ namespace FluidSurface
               if (modes.empty())
                 entry << "no Ritz vector of this wavenumber and parity";
               else
-                entry << "residual " << std::setprecision(3) << modes[0].residual;
+                entry << which << ": residual " << std::setprecision(3) << modes[first].residual;
               entry << ")";
               unconverged.push_back(entry.str());
             }
@@ -607,7 +613,7 @@ namespace FluidSurface
     if (!unconverged.empty())
       {
         std::ostringstream msg;
-        msg << "the leading eigenvalue of " << unconverged.front();
+        msg << "the spectrum of " << unconverged.front();
         for (unsigned int i = 1; i < unconverged.size(); ++i)
           msg << (i + 1 == unconverged.size() ? " and of " : ", of ") << unconverged[i];
         msg << " did not reach 'stability/residual tolerance' " << residual_tolerance
