@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""benchmarks/end_states: one row per run of run.sh from its statistics and summary.
+    /usr/bin/python3 benchmarks/end_states/table.py WORK results.csv
+Columns: v, L0 (nominal), start, F, W, omega, lambda1 ≤ lambda2 ≤ lambda3 (inertia eigenvalues), rigid fraction,
+end time, shape, tilt angle (degrees between the rotation vector and the axis of least inertia: 90 for a body
+rotating about a transverse axis), status (steady | not steady | stopped: …), L0 measured (|L| at t = 0).
+shape, from the inertia eigenvalues with δ = 1e-2 relative to λ₃:
+  sphere      λ₃ − λ₁ < δλ₃
+  prolate     λ₃ − λ₂ < δλ₃: elongated, nearly a body of revolution about the axis of least inertia
+  oblate      λ₂ − λ₁ < δλ₃: flattened, nearly a body of revolution about the axis of largest inertia
+  triaxial    otherwise
+A steady state rotates about its axis of largest inertia: a steady prolate tumbles (tilt 90), a steady oblate
+spins about its symmetry axis."""
+import csv
+import glob
+import math
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "phase3"))
+import statistics_columns  # noqa: E402
+
+
+def shape_class(l1, l2, l3, delta=1e-2):
+    if l3 - l1 < delta * l3:
+        return "sphere"
+    if l3 - l2 < delta * l3:
+        return "prolate"
+    if l2 - l1 < delta * l3:
+        return "oblate"
+    return "triaxial"
+
+
+rows = []
+for prm in sorted(glob.glob(os.path.join(sys.argv[1], "v*_L*_*.prm"))):
+    name = os.path.basename(prm)[:-4]
+    m = re.match(r"v([0-9.]+)_L([0-9.]+)_(prolate|oblate)$", name)
+    if not m:
+        continue
+    v, L0, start = m.groups()
+    run = os.path.join(sys.argv[1], name)
+    row = {"v": v, "L0": L0, "start": start}
+    try:
+        c = statistics_columns.read(os.path.join(run, "statistics"))
+        summary = open(os.path.join(run, "summary")).read() if os.path.exists(os.path.join(run, "summary")) else ""
+    except (OSError, ValueError):
+        c, summary = None, ""
+    if not c or not c.get("time"):
+        row["status"] = "not run"
+        rows.append(row)
+        continue
+    lam = sorted(c[f"inertia eigenvalue {k}"][-1] for k in (1, 2, 3))
+    status = "not steady"
+    if "steady state: reached" in summary:
+        status = "steady"
+    elif summary.startswith("status: stopped"):
+        status = "stopped: " + summary.splitlines()[0][len("status: "):].replace(",", ";")
+    L0m = math.sqrt(sum(c[f"angular momentum {d}"][0] ** 2 for d in "xyz"))
+    row.update({
+        "F": f"{c['total energy'][-1]:.8g}", "W": f"{c['bending energy'][-1]:.8g}",
+        "omega": f"{c['angular velocity'][-1]:.6g}",
+        "lambda1": f"{lam[0]:.6g}", "lambda2": f"{lam[1]:.6g}", "lambda3": f"{lam[2]:.6g}",
+        "rigid fraction": f"{c['rigid fraction'][-1]:.6f}", "end time": f"{c['time'][-1]:.6g}",
+        "shape": shape_class(*lam), "tilt angle": f"{c['tilt angle'][-1]:.3g}", "status": status, "L0 measured": f"{L0m:.6g}"})
+    rows.append(row)
+
+fields = ["v", "L0", "start", "F", "W", "omega", "lambda1", "lambda2", "lambda3", "rigid fraction", "end time",
+          "shape", "tilt angle", "status", "L0 measured"]
+with open(sys.argv[2], "w", newline="") as f:
+    w = csv.DictWriter(f, fieldnames=fields)
+    w.writeheader()
+    for r in sorted(rows, key=lambda r: (float(r["v"]), float(r["L0"]), r["start"])):
+        w.writerow(r)
+print(f"{len(rows)} rows, {sum(r.get('status') == 'steady' for r in rows)} steady -> {sys.argv[2]}")
