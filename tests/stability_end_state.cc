@@ -8,6 +8,8 @@
 
 #include <fluid_surface/scenes/run_program.h>
 
+#include "spectrum_csv.h"
+
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -66,16 +68,7 @@ main(int argc, char **argv)
                              stability + "  set checkpoint directory = results_full\nend\n"
                                          "subsection output\n  set output directory = results_end_state\n"
                                          "  set report wall time = false\nend\n");
-  std::vector<std::vector<std::string>> rows;
-  std::ifstream                         csv("results_end_state/spectrum.csv");
-  for (std::string line; std::getline(csv, line);)
-    {
-      std::vector<std::string> fields;
-      std::istringstream       split(line);
-      for (std::string field; std::getline(split, field, ',');)
-        fields.push_back(field);
-      rows.push_back(fields);
-    }
+  const std::vector<std::vector<std::string>> rows = read_spectrum_csv("results_end_state/spectrum.csv");
   std::cout << "scene stability from the checkpoint: exit status " << end_state.first << ", rows "
             << (rows.empty() ? 0 : rows.size() - 1) << std::endl;
   if (rows.size() > 1)

@@ -8,6 +8,8 @@
 
 #include <fluid_surface/scenes/run_program.h>
 
+#include "spectrum_csv.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -47,16 +49,7 @@ namespace
     std::ostringstream screen, errors;
     const int          status = run_program({file}, screen, errors, MPI_COMM_WORLD);
     message                   = errors.str();
-    std::vector<std::vector<std::string>> rows;
-    std::ifstream                         csv(directory + "/spectrum.csv");
-    for (std::string line; std::getline(csv, line);)
-      {
-        std::vector<std::string> fields;
-        std::istringstream       split(line);
-        for (std::string field; std::getline(split, field, ',');)
-          fields.push_back(field);
-        rows.push_back(fields);
-      }
+    const std::vector<std::vector<std::string>> rows = read_spectrum_csv(directory + "/spectrum.csv");
     return {status, rows};
   }
 } // namespace
