@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """benchmarks/end_states: the phase diagram of end states, v against L₀, one panel per start (prolate, oblate);
-marker by shape class, colour by F − W (the rotational energy |L|²/(2λ₃) of a rigid end state).
+marker by shape class, colour by F − W (the rotational energy |L|²/(2λ₃) of a rigid end state), a red edge for a
+run that is not steady, and a ring around the points where the two starts end in different states (F differs by
+more than 1e-4 relative, or the shape class differs): a second local minimum.
     /usr/bin/python3 benchmarks/end_states/plot.py results.csv phase_diagram.png"""
 import csv
 import sys
@@ -9,24 +11,48 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
 
 rows = [r for r in csv.DictReader(open(sys.argv[1])) if r.get("F")]
 markers = {"sphere": "o", "prolate": "s", "oblate": "D", "triaxial": "^"}
-values = [float(r["F"]) - float(r["W"]) for r in rows] or [0.0]
-fig, axes = plt.subplots(1, 2, figsize=(11, 4.5), sharey=True)
+l0s = sorted({float(r["L0"]) for r in csv.DictReader(open(sys.argv[1]))})
+column = {L0: k for k, L0 in enumerate(l0s)}  # L₀ = 0, 5, 10, 20, 40 equally spaced
+rotational = [float(r["F"]) - float(r["W"]) for r in rows] or [0.0]
+norm = plt.Normalize(min(rotational), max(rotational))
+
+
+def differs(a, b):
+    return a["shape"] != b["shape"] or abs(float(a["F"]) - float(b["F"])) > 1e-4 * abs(float(a["F"]))
+
+
+by_point = {}
+for r in rows:
+    by_point.setdefault((r["v"], r["L0"]), {})[r["start"]] = r
+fig, axes = plt.subplots(1, 2, figsize=(11, 4.8), sharey=True)
 for ax, start in zip(axes, ("prolate", "oblate")):
-    for shape, marker in markers.items():
-        sel = [r for r in rows if r["start"] == start and r["shape"] == shape]
-        if not sel:
-            continue
-        sc = ax.scatter([float(r["L0"]) for r in sel], [float(r["v"]) for r in sel], marker=marker, s=120,
-                        c=[float(r["F"]) - float(r["W"]) for r in sel], cmap="viridis", vmin=min(values),
-                        vmax=max(values), edgecolors=["black" if r["status"] == "steady" else "red" for r in sel],
-                        label=shape)
+    for r in (r for r in rows if r["start"] == start):
+        x, y = column[float(r["L0"])], float(r["v"])
+        ax.scatter([x], [y], marker=markers[r["shape"]], s=150, c=[float(r["F"]) - float(r["W"])], cmap="viridis",
+                   norm=norm, edgecolors="black" if r["status"] == "steady" else "red", linewidths=1.5, zorder=3)
+        pair = by_point[(r["v"], r["L0"])]
+        if len(pair) == 2 and differs(pair["prolate"], pair["oblate"]):
+            ax.scatter([x], [y], marker="o", s=420, facecolors="none", edgecolors="tab:orange", linewidths=1.5,
+                       zorder=2)
+    ax.set_xticks(range(len(l0s)), [f"{L0:g}" for L0 in l0s])
+    ax.set_xlim(-0.5, len(l0s) - 0.5)
     ax.set_xlabel("L₀")
-    ax.set_title(f"from a {start} spheroid (red edge: not steady)")
-    ax.legend(fontsize=8, loc="lower right")
+    ax.set_title(f"start: {start} spheroid")
+    ax.grid(alpha=0.3)
 axes[0].set_ylabel("reduced volume v")
-fig.colorbar(plt.cm.ScalarMappable(norm=plt.Normalize(min(values), max(values)), cmap="viridis"), ax=axes,
-             label="F − W")
+axes[0].set_ylim(0.6, 1.0)
+handles = [Line2D([], [], marker=m, linestyle="none", color="grey", markeredgecolor="black", markersize=9, label=s)
+           for s, m in markers.items()]
+handles += [Line2D([], [], marker="s", linestyle="none", color="grey", markeredgecolor="red", markersize=9,
+                   label="not steady"),
+            Line2D([], [], marker="o", linestyle="none", markerfacecolor="none", markeredgecolor="tab:orange",
+                   markersize=14, label="starts end apart")]
+fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=9)
+fig.subplots_adjust(bottom=0.22, right=0.86)
+fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap="viridis"), cax=fig.add_axes([0.89, 0.22, 0.02, 0.66]),
+             label="F − W (rotational energy)")
 fig.savefig(sys.argv[2], dpi=110)
