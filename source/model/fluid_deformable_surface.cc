@@ -44,7 +44,9 @@ namespace FluidSurface
     prm.declare_entry("rotation centre",
                       "0, 0, 0",
                       Patterns::List(RealRange::closed(-100, 100), 3, 3),
-                      "Centre c: three numbers, each |c_i| ≤ 100.");
+                      "Centre c of the initial rigid rotation, three numbers, each |c_i| ≤ 100. A shape "
+                      "perturbation moves c with the centre of mass, so that a perturbed surface spins about its own "
+                      "centre and starts without linear momentum.");
     prm.declare_entry("translation velocity",
                       "0, 0, 0",
                       Patterns::List(RealRange::closed(-100, 100), 3, 3),
@@ -200,6 +202,10 @@ namespace FluidSurface
             azimuthal_perturbation ? azimuthal_perturbation->normalized_real_part(radial) : field(x);
           return Point<3>(x + shape_perturbation * delta * radial / radial.norm());
         });
+        // Spinning about the unperturbed centre would give the surface the momentum ω e × A(c' − c), and L
+        // about its centre of mass would then change by (c(t) − c(0)) × P wherever the discrete centre of
+        // mass does not move exactly with P/A.
+        rotation_centre += Point<3>(geometry.measure().centre_of_mass) - centre;
       }
     if (equilibrium_rotation)
       angular_velocity = geometry.equilibrium_shape()->angular_velocity();

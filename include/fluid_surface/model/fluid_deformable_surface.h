@@ -271,7 +271,7 @@ namespace FluidSurface
     double               angular_velocity{};      ///< ω₀
     bool                 equilibrium_rotation{};  ///< ω₀ from the geometry's equilibrium shape
     dealii::Tensor<1, 3> rotation_axis;           ///< e (normalized)
-    dealii::Point<3>     rotation_centre;         ///< c
+    dealii::Point<3>     rotation_centre;         ///< c, moved with the centre of mass by a shape perturbation
     double               velocity_perturbation{}; ///< ε_u
     double               shape_perturbation{};    ///< ε_X
     unsigned int         random_seed{};           ///< seed of the perturbations
