@@ -7,7 +7,7 @@
 #   benchmarks/end_states/run.sh [--quick]      from the repository root, after building
 #     (--quick: v = 0.75, L₀ = 10, both starts, refinement 2, t ≤ 5)
 # Environment: WORK (default benchmarks/end_states/work, not committed), EXE, JOBS (runs at once, default 1),
-# REFINEMENT (default 3), VS, L0S (override the grids), STEPS_PER_RUN.
+# REFINEMENT (default 3), VS, L0S (override the grids), END (default 100: the last time a run may reach), STEPS_PER_RUN.
 # Then: /usr/bin/python3 benchmarks/end_states/table.py WORK benchmarks/end_states/results.csv
 #       /usr/bin/python3 benchmarks/end_states/plot.py benchmarks/end_states/results.csv benchmarks/end_states/phase_diagram.png
 set -u
@@ -15,7 +15,7 @@ cd "$(dirname "$0")/../.."
 here=benchmarks/end_states
 exe=${EXE:-$PWD/build/fluid_surface}
 work=${WORK:-$PWD/$here/work}
-vs=${VS:-"0.65 0.75 0.85 0.95"}; l0s=${L0S:-"0 5 10 20 40"}; refinement=${REFINEMENT:-3}; end=100
+vs=${VS:-"0.65 0.75 0.85 0.95"}; l0s=${L0S:-"0 5 10 20 40"}; refinement=${REFINEMENT:-3}; end=${END:-100}
 if [ "${1:-}" = "--quick" ]; then vs=0.75; l0s=10; refinement=2; end=5; fi
 mkdir -p "$work"
 queue=$(for v in $vs; do for L0 in $l0s; do for start in prolate oblate; do
@@ -45,11 +45,17 @@ queue=$(for v in $vs; do for L0 in $l0s; do for start in prolate oblate; do
   } > "$work/$name.prm"
   echo "$name"
 done; done; done)
-# A run that finished (its summary says completed) is not run again.
+# A run that reached its steady state, or finished at the end time, is not run again; one that ended unsteady at an
+# earlier end time continues from its final checkpoint (END larger than before).
 run_one() {
-  if grep -q "^status: completed" "$work/$1/summary" 2>/dev/null; then echo "$1 done before"; return; fi
+  local s=$work/$1/summary t_last
+  if grep -q "steady state: reached" "$s" 2>/dev/null; then echo "$1 steady before"; return; fi
+  t_last=$(tail -n 1 "$work/$1/statistics" 2>/dev/null | awk '{print $2}')
+  if grep -q "^status: completed" "$s" 2>/dev/null && awk -v t="${t_last:-0}" -v e="$end" 'BEGIN { exit !(t >= e - 1e-9) }'; then
+    echo "$1 done before"; return
+  fi
   "$exe" "$work/$1.prm" >> "$work/$1.log" 2>&1; echo "$1 exit $?"
 }
-export -f run_one; export exe work
+export -f run_one; export exe work end
 echo "$queue" | xargs -P "${JOBS:-1}" -I{} bash -c 'run_one {}'
 /usr/bin/python3 $here/table.py "$work" "$work/results.csv"
