@@ -18,6 +18,9 @@ work=${WORK:-$PWD/$here/work}
 vs=${VS:-"0.65 0.75 0.85 0.95"}; l0s=${L0S:-"0 5 10 20 40"}; refinement=${REFINEMENT:-3}; end=${END:-100}
 if [ "${1:-}" = "--quick" ]; then vs=0.75; l0s=10; refinement=2; end=5; fi
 mkdir -p "$work"
+# τ_max 0.1 everywhere but at v = 0.95, L₀ = 20: there both starts kept a non-rigid oscillation with τ_max 0.1 to
+# t = 250, and F + ∫D rose by about 0.075 per unit time (energy put in by the step); with 0.025 the flow turns rigid.
+tau_max() { if [ "$1" = 0.95 ] && [ "$2" = 20 ]; then echo 0.025; else echo 0.1; fi; }
 queue=$(for v in $vs; do for L0 in $l0s; do for start in prolate oblate; do
   name=v${v}_L${L0}_${start}
   read -r a c omega inertia <<< "$(/usr/bin/python3 $here/spheroid.py "$v" "$start" "$L0")"
@@ -31,7 +34,7 @@ queue=$(for v in $vs; do for L0 in $l0s; do for start in prolate oblate; do
     echo "subsection initial state"; echo "  set angular velocity = $omega"; echo "  set rotation axis = 0, 0, 1"
     echo "  set shape perturbation = 3e-5"; echo "  set random seed = 1"; echo "end"
     echo "subsection time stepping"; echo "  set end time = $end"; echo "  set time step = 0.01"
-    echo "  set maximum time step = 0.1"; echo "end"
+    echo "  set maximum time step = $(tau_max "$v" "$L0")"; echo "end"
     echo "subsection geometry iteration"; echo "  set maximum iterations = 1"; echo "  set tolerance = 0"
     echo "  set apply = after rejection"; echo "end"
     echo "subsection mesh redistribution"; echo "  set tangential law = conformal"; echo "  set pull onset quality = 0.2"
