@@ -51,7 +51,7 @@ namespace FluidSurface
     {
       const auto result = model.advance(tau);
       if (!result.solved)
-        throw std::runtime_error(result.failure);
+        throw std::runtime_error(result.message);
       geometry.compute_curvature();
       time += tau;
       model.accept(time);

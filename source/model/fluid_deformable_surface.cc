@@ -86,8 +86,8 @@ namespace FluidSurface
   {
     reject_entries_unused_by_scene({"fixed surface/*", "fixed surface solver/*"}, "full");
     step.parse_parameters(prm, maximum_time_step);
-    reparametrization.parse_parameters(prm, step.redistribution.mesh_quality_floor);
-    run_request = StepRequest::flow_step(step.redistribution.law);
+    reparametrization.parse_parameters(prm, step.components().redistribution.mesh_quality_floor);
+    run_request = StepRequest::flow_step(step.components().redistribution.law);
     prm.enter_subsection("initial state");
     angular_velocity     = prm.get_double("angular velocity");
     equilibrium_rotation = prm.get_bool("equilibrium rotation");
@@ -209,12 +209,12 @@ namespace FluidSurface
       }
     if (equilibrium_rotation)
       angular_velocity = geometry.equilibrium_shape()->angular_velocity();
-    step.setup_dofs();
+    step.setup_system();
     state.reinit(step.dof_handler(), geometry);
     set_initial_velocity();
     // The targets with the quadrature of the projection and the diagnostics (the step's rows use the
     // assembly's: their difference is what ConservationProjection removes).
-    if (step.flow.conserve_momenta)
+    if (step.components().flow.conserve_momenta)
       state.rigid_targets = ConservationProjection::momenta(geometry, step.dof_handler(), state.solution);
     const SurfaceGeometry::Measures m = geometry.measure();
     state.target_volume               = m.volume;
@@ -249,7 +249,7 @@ namespace FluidSurface
   FluidDeformableSurface::set_prescribed_velocity(const Function<3> &velocity)
   {
     AssertDimension(velocity.n_components, 3);
-    AssertThrow(!step.volume_constraint.enabled && !step.momentum_constraints.active(),
+    AssertThrow(!step.components().volume_constraint.enabled && !step.components().momentum_constraints.active(),
                 ExcMessage("a prescribed motion needs the volume and momentum constraints off"));
     run_request.velocity   = StepRequest::Velocity::prescribed;
     run_request.prescribed = &velocity;
@@ -292,7 +292,7 @@ namespace FluidSurface
     step.accept_history(); // before the state moves on: BDF2 keeps it as x^{m−1}
     state.position = geometry.position();
     state.solution = step.candidate();
-    const double anchor_time = step.redistribution.anchor_time;
+    const double anchor_time = step.components().redistribution.anchor_time;
     if (anchored || anchor_time < 0 || time < anchor_time)
       return false;
     anchor();
@@ -314,7 +314,7 @@ namespace FluidSurface
     position = state.position;
     geometry.set_position(position);
     geometry.compute_curvature();
-    step.request_factorization();
+    step.solver().request_factorization();
   }
 
   void
@@ -330,8 +330,8 @@ namespace FluidSurface
     step.hanging_node_constraints().distribute(solution);
     state.solution = solution;
     set_reference_position();
-    step.forget_error_history();
-    step.request_factorization();
+    step.forget_history();
+    step.solver().request_factorization();
     geometry.compute_curvature();
   }
 
@@ -343,14 +343,14 @@ namespace FluidSurface
         return total_energy(kinetic_energy(state.solution), geometry.compute_curvature());
       });
     if (result.done)
-      step.forget_error_history(); // the transferred state has no history
+      step.forget_history(); // the transferred state has no history
     return result;
   }
 
   double
   FluidDeformableSurface::total_energy(const double kinetic_energy, const double willmore_energy) const
   {
-    return (step.flow.inertia ? kinetic_energy : 0.0) + step.bending.energy(willmore_energy);
+    return (step.components().flow.inertia ? kinetic_energy : 0.0) + step.components().bending.energy(willmore_energy);
   }
 
   void
@@ -373,7 +373,7 @@ namespace FluidSurface
   {
     state.save(data, step.dof_handler(), geometry);
     data.set("model/element", step.dof_handler().get_fe().get_name());
-    data.set("model/factorizations", step.n_factorizations());
+    data.set("model/factorizations", step.solver().n_factorizations());
     // The seeded random fields are drawn in setup() only; the seed is kept for the record.
     data.set("model/random seed", random_seed);
     reparametrization.save(data);
@@ -385,14 +385,14 @@ namespace FluidSurface
   void
   FluidDeformableSurface::load(const CheckpointData &data)
   {
-    step.setup_dofs();
+    step.setup_system();
     const std::string element = step.dof_handler().get_fe().get_name();
     if (data.get_string("model/element") != element)
       throw std::runtime_error("the checkpoint holds the element " + data.get_string("model/element") +
                                ", this run uses " + element);
     state.load(data, step.dof_handler(), geometry);
     set_reference_position();
-    step.set_n_factorizations(data.get_unsigned("model/factorizations"));
+    step.solver().set_n_factorizations(data.get_unsigned("model/factorizations"));
     reparametrization.load(data);
     step.load_history(data);
     anchored = data.has("model/anchored");
@@ -400,15 +400,16 @@ namespace FluidSurface
   }
 
   void
-  FluidDeformableSurface::set_bdf2(const bool on)
+  FluidDeformableSurface::set_time_scheme(const TimeScheme::Kind kind)
   {
-    const GeometryIteration &iteration = step.geometry_iteration;
+    const bool on = kind == TimeScheme::Kind::bdf2;
+    const GeometryIteration &iteration = step.components().geometry_iteration;
     if (on && !(iteration.enabled() && iteration.apply == GeometryIteration::Apply::always &&
                 iteration.time_level == 1))
       throw_invalid_entry("time stepping/scheme",
                           "BDF2",
                           "'backward Euler', or 'geometry iteration/maximum iterations' ≥ 1 with apply = always and "
                           "time level = 1 (BDF2 needs the geometry of t + τ; a lagged geometry is first order)");
-    step.set_bdf2(on);
+    step.set_time_scheme(kind);
   }
 } // namespace FluidSurface

@@ -173,3 +173,21 @@ namespace FluidSurface
     ++iteration;
   }
 } // namespace FluidSurface
+
+#include <fluid_surface/io/checkpoint.h>
+
+namespace FluidSurface
+{
+  void
+  CorrectedSteps::save(CheckpointData &data) const
+  {
+    if (left > 0)
+      data.set("model/corrected steps left", left);
+  }
+
+  void
+  CorrectedSteps::load(const CheckpointData &data)
+  {
+    left = data.has("model/corrected steps left") ? data.get_unsigned("model/corrected steps left") : 0;
+  }
+} // namespace FluidSurface

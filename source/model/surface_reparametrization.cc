@@ -278,7 +278,7 @@ namespace FluidSurface
       SurfaceStep &step;
       ~Finish()
       {
-        step.release_fresh_factorization();
+        step.solver().release_fresh_factorization();
       }
     } finish{step};
     result.quality_before      = geometry.measure().mesh_quality;
@@ -287,12 +287,12 @@ namespace FluidSurface
     const auto        restore    = [&](const std::string &why) {
       accepted.solution = kept_state;
       accepted.position = kept_position;
-      step.forget_last_solution();
+      step.solver().forget_last_solution();
       VectorType position(geometry.locally_owned_dofs(), comm);
       position = kept_position;
       geometry.set_position(position);
       geometry.compute_curvature();
-      step.request_factorization();
+      step.solver().request_factorization();
       result.failure = why;
       return result;
     };
@@ -302,8 +302,8 @@ namespace FluidSurface
     // before it and the transfer of the fields. Projecting onto the previous iterate, not onto the first
     // surface, keeps every search within the ghost layer of a parallel mesh as long as a solve moves no node
     // by more than a cell; the surface then changes by its interpolation error once per iteration.
-    const SurfaceFluid           &flow         = step.flow;
-    const ConservationProjection &conservation = step.conservation;
+    const SurfaceFluid           &flow         = step.components().flow;
+    const ConservationProjection &conservation = step.components().conservation;
     const DoFHandler<2, 3>       &dofs         = step.dof_handler();
     VectorType                    state(dofs.locally_owned_dofs(), comm);
     state = accepted.solution;
@@ -315,7 +315,7 @@ namespace FluidSurface
       // the current surface is the one that degraded (a bgn prolate went from quality 0.098 to 0.088).
       relaxation_request.law    = MeshRedistribution::Law::reference;
       relaxation_request.solver = StepRequest::Solver::fresh_klu;
-      const double relaxation_time = step.redistribution.relaxation_time;
+      const double relaxation_time = step.components().redistribution.relaxation_time;
       const double tau             = relaxation_time > 0 ? 10 * relaxation_time : 1.0;
       VectorType   surface = kept_position, fields = accepted.solution;
       std::string  failure;
@@ -324,7 +324,7 @@ namespace FluidSurface
           const SurfaceStep::Result relaxation = step.advance(relaxation_request, tau);
           if (!relaxation.solved)
             {
-              failure = relaxation.failure;
+              failure = relaxation.message;
               break;
             }
           geometry.set_position(closest_points(geometry, surface));
@@ -344,7 +344,7 @@ namespace FluidSurface
       for (unsigned int pass = 0; pass < 2; ++pass)
         {
           result.node_correction += conservation.project_area_and_volume(
-            geometry, accepted.target_area, accepted.target_volume, step.volume_constraint.enabled);
+            geometry, accepted.target_area, accepted.target_volume, step.components().volume_constraint.enabled);
           geometry.compute_curvature();
         }
     step.copy_position_into(geometry.position(), state);
@@ -352,8 +352,8 @@ namespace FluidSurface
       return restore("the transferred fields are not finite");
     accepted.solution = state;
     accepted.position = geometry.position();
-    step.forget_last_solution();
-    step.request_factorization();
+    step.solver().forget_last_solution();
+    step.solver().request_factorization();
 
     // The velocity back onto the discrete constraints: a step of the scheme in the limit τ → 0.
     if (flow.inertia && run_request.prescribed_velocity() == nullptr)
@@ -362,7 +362,7 @@ namespace FluidSurface
         projection_request.solver      = StepRequest::Solver::fresh_klu;
         const SurfaceStep::Result projection = step.advance(projection_request, projection_time_step);
         if (!projection.solved)
-          return restore("the projection of the velocity failed: " + projection.failure);
+          return restore("the projection of the velocity failed: " + projection.message);
         state = step.candidate();
         step.copy_position_into(accepted.position, state);
         VectorType position(geometry.locally_owned_dofs(), comm);
@@ -371,8 +371,8 @@ namespace FluidSurface
         if (conservation.enabled && flow.conserve_momenta)
           conservation.project_momenta(geometry, dofs, accepted.rigid_targets, state);
         accepted.solution = state;
-        step.forget_last_solution();
-        step.request_factorization();
+        step.solver().forget_last_solution();
+        step.solver().request_factorization();
       }
 
     geometry.compute_curvature();

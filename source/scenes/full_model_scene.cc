@@ -36,7 +36,7 @@ namespace FluidSurface
     energy_control = EnergyStepController(time.energy_tolerance());
     model.parse_parameters(prm, time.maximum_step_size());
     model.set_error_estimation(time.error_control());
-    model.set_bdf2(time.bdf2());
+    model.set_time_scheme(time.scheme());
     diagnostics.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
     steady_state.parse_parameters(prm);
@@ -94,7 +94,7 @@ namespace FluidSurface
             const SurfaceStep::Result step = model.advance(tau);
             if (!step.solved)
               {
-                retry_step(tau, step.failure, step.failure_details);
+                retry_step(tau, step.failure, step.message, step.failure_details);
                 continue;
               }
             if (time.error_control() && step.error_estimate > time.error_bound())
@@ -102,7 +102,7 @@ namespace FluidSurface
                 std::ostringstream reason;
                 reason << "local error estimate " << std::setprecision(3) << step.error_estimate
                        << " above 'error tolerance' " << time.error_bound();
-                retry_step(tau, reason.str(), "", std::max(0.2, time.error_step_factor(step.error_estimate)));
+                retry_step(tau, StepFailure::error_estimate, reason.str(), "", std::max(0.2, time.error_step_factor(step.error_estimate)));
                 continue;
               }
             const Energies                       candidate = candidate_energies();
@@ -110,7 +110,7 @@ namespace FluidSurface
               energy_control.decide(total_energy, candidate.total, tau);
             if (energy.verdict == EnergyStepController::Verdict::reject)
               {
-                if (model.iterate_geometry_after_rejection())
+                if (model.start_corrected_steps())
                   {
                     model.restore_last_state();
                     time.repeat_step();
@@ -119,7 +119,7 @@ namespace FluidSurface
                           << "); retried at the same τ with the iterated geometry" << std::endl;
                   }
                 else
-                  retry_step(tau, energy.reason, "");
+                  retry_step(tau, StepFailure::energy_rise, energy.reason, "");
                 continue;
               }
             accept_step(tau, step.error_estimate, candidate, energy);
@@ -213,6 +213,7 @@ namespace FluidSurface
 
   void
   FullModelScene::retry_step(const double       tau,
+                             const StepFailure  failure,
                              const std::string &reason,
                              const std::string &solver_report,
                              const double       factor)
@@ -226,22 +227,7 @@ namespace FluidSurface
               << solver_report;
         log_error(entry.str());
       }
-    std::string advice;
-    if (!solver_report.empty())
-      advice = "the linear solver failed (its report is in " + output.directory() + "error.log); try a smaller "
-               "'time stepping/maximum time step', 'linear solver/reuse factorization = false' or another "
-               "'linear solver/direct solver'; ";
-    else if (reason.rfind("the geometry iteration did not converge", 0) == 0)
-      advice = "the step's geometry iteration did not contract at every τ tried; try a larger 'geometry "
-               "iteration/maximum iterations' or 'geometry iteration/tolerance', or 'maximum iterations = 0' (the "
-               "lagged step); ";
-    else if (reason.rfind("the solution is not finite", 0) == 0)
-      advice = "the step's solution was not finite; try a smaller 'time stepping/maximum time step' or a finer "
-               "'geometry/refinement', and check that the physical parameters are of order 1; ";
-    else
-      advice = "the energy rose faster than 'time stepping/energy tolerance' allows at every τ tried; try a finer "
-               "'geometry/refinement' or a smaller 'time stepping/maximum time step' (doc/scheme.md, \"The "
-               "residual energy rise\"); ";
+    const std::string advice = FluidSurface::advice(failure, output.directory() + "error.log");
     time.reject(reason,
                 advice + "the output up to the last accepted step, the summary and the last checkpoint are intact",
                 factor);
@@ -270,10 +256,10 @@ namespace FluidSurface
   {
     model.setup();
     pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ"
-          << (model.has_inertia() ? "" : " (Stokes limit: + 6 rigid-motion multipliers)") << std::endl;
+          << (model.components().flow.inertia ? "" : " (Stokes limit: + 6 rigid-motion multipliers)") << std::endl;
     std::ostringstream report;
     diagnostics.set_reference(diagnostics.evaluate(geometry, model.dof_handler(), model.solution()),
-                              model.bending_number(),
+                              model.components().bending.Be,
                               report);
     pcout << report.str() << std::flush;
     willmore = geometry.compute_curvature();
@@ -310,9 +296,9 @@ namespace FluidSurface
         throw std::runtime_error(msg.str());
       }
     std::ostringstream report;
-    diagnostics.set_reference(diagnostics.initial_values(), model.bending_number(), report);
+    diagnostics.set_reference(diagnostics.initial_values(), model.components().bending.Be, report);
     pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ"
-          << (model.has_inertia() ? "" : " (Stokes limit: + 6 rigid-motion multipliers)") << '\n'
+          << (model.components().flow.inertia ? "" : " (Stokes limit: + 6 rigid-motion multipliers)") << '\n'
           << report.str() << "-- resumed from " << checkpoint.last_slot() << ": step " << time.step_number()
           << ", t = " << time.time() << std::endl;
   }
@@ -366,7 +352,7 @@ namespace FluidSurface
     TimerOutput::Scope        section(computing_timer, "diagnostics");
     const Diagnostics::Values v = diagnostics.evaluate(geometry, model.dof_handler(), model.solution());
     diagnostics.record(v, time.time(), tau);
-    const double bending_energy = model.bending_energy(willmore);
+    const double bending_energy = model.components().bending.energy(willmore);
     total_energy                = model.total_energy(v.kinetic_energy, willmore);
 
     statistics.add_value("time step", time.step_number());
@@ -406,7 +392,7 @@ namespace FluidSurface
           pcout << std::setprecision(3) << std::scientific << "    E(L2) = " << v.l2_distance << " (axial "
                 << v.l2_distance_axial << ", equatorial " << v.l2_distance_equatorial << ")" << std::defaultfloat
                 << '\n';
-        if (model.iterates_geometry())
+        if (model.components().geometry_iteration.enabled())
           pcout << "    geometry iterations " << step.geometry_iterations << ", last node move " << std::setprecision(2)
                 << std::scientific << step.geometry_change << " h" << std::defaultfloat << '\n';
         if (output.report_wall_time())
@@ -420,10 +406,10 @@ namespace FluidSurface
   FullModelScene::check_mesh_quality() const
   {
     const double quality = geometry.measure().mesh_quality;
-    if (quality < model.mesh_quality_floor())
+    if (quality < model.components().redistribution.mesh_quality_floor)
       {
         std::ostringstream msg;
-        msg << "mesh quality " << quality << " fell below the 'mesh quality floor' " << model.mesh_quality_floor()
+        msg << "mesh quality " << quality << " fell below the 'mesh quality floor' " << model.components().redistribution.mesh_quality_floor
             << " at step " << time.step_number() << ", t = " << time.time();
         throw RunFailed(msg.str(),
                         "the output up to the previous step, the summary and the last checkpoint are intact; a "

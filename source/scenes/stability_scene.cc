@@ -123,9 +123,9 @@ namespace FluidSurface
     TimeStepper time;
     time.parse_parameters(prm);
     tau  = time.step_size();
-    bdf2 = time.bdf2();
+    bdf2 = time.scheme() == TimeScheme::Kind::bdf2;
     model.parse_parameters(prm, time.maximum_step_size());
-    model.set_bdf2(time.bdf2());
+    model.set_time_scheme(time.scheme());
     if (!from_checkpoint && geometry.equilibrium_shape() == nullptr)
       {
         prm.enter_subsection("geometry");
@@ -206,7 +206,7 @@ namespace FluidSurface
         if (!step.solved)
           {
             std::ostringstream reason;
-            reason << "step " << n + 1 << " of the time map of " << what << " was not solved (" << step.failure << ")";
+            reason << "step " << n + 1 << " of the time map of " << what << " was not solved (" << step.message << ")";
             throw RunFailed(reason.str(),
                             "the rows of spectrum.csv so far are intact; try a smaller 'time stepping/time step' or "
                             "'stability/perturbation size'");

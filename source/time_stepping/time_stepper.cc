@@ -97,12 +97,12 @@ namespace FluidSurface
     easy_steps                = prm.get_integer("easy steps before growth");
     relative_energy_tolerance = prm.get_double("energy tolerance");
     error_tolerance           = prm.get_double("error tolerance");
-    bdf2_scheme               = prm.get("scheme") == "BDF2";
+    scheme_kind = prm.get("scheme") == "BDF2" ? TimeScheme::Kind::bdf2 : TimeScheme::Kind::backward_euler;
     if (error_tolerance > 0 && !adaptive)
       throw_invalid_entry("time stepping/error tolerance",
                           prm.get("error tolerance"),
                           "0 with adaptive = false (a fixed step has nothing to adapt)");
-    if (bdf2_scheme && growth > 2)
+    if (scheme_kind == TimeScheme::Kind::bdf2 && growth > 2)
       throw_invalid_entry("time stepping/growth factor",
                           prm.get("growth factor"),
                           "a factor ≤ 2 with scheme = BDF2 (variable-step BDF2 is zero-stable for τ/τ_p < 1 + √2)");

@@ -101,12 +101,13 @@ namespace FluidSurface
     {
       return angular_velocity;
     }
-    /// After a rejected step: whether it was a lagged step that `geometry iteration/apply = after rejection`
-    /// retries, at the same τ, with the iterated geometry (SurfaceStep::iterate_geometry_after_rejection()).
+    /// After a rejected step: with `geometry iteration/apply = after rejection` and a lagged step rejected,
+    /// starts the corrected steps (the retry at the same τ and the next K steps iterate their geometry;
+    /// SurfaceStep::start_corrected_steps()). Returns whether it did.
     bool
-    iterate_geometry_after_rejection()
+    start_corrected_steps()
     {
-      return step.iterate_geometry_after_rejection();
+      return step.start_corrected_steps();
     }
 
     /**
@@ -156,23 +157,11 @@ namespace FluidSurface
     {
       return step.candidate();
     }
-    /// (1/2Be)∫|κ|² with κ the weak curvature of the current surface (needs geometry.compute_curvature()).
-    double
-    bending_energy(const double willmore_energy) const
+    /// The parsed components of the step (flow, bending, mesh law, constraints, geometry iteration).
+    const StepComponents &
+    components() const
     {
-      return step.bending.energy(willmore_energy);
-    }
-    /// Be of the bending force.
-    double
-    bending_number() const
-    {
-      return step.bending.Be;
-    }
-    /// Whether the step iterates its geometry (`geometry iteration/maximum iterations` > 0).
-    bool
-    iterates_geometry() const
-    {
-      return step.geometry_iteration.enabled();
+      return step.components();
     }
     /// Whether the steps estimate their local error (set by the scene for `time stepping/error tolerance` > 0).
     void
@@ -181,23 +170,12 @@ namespace FluidSurface
       step.set_error_estimation(on);
     }
     /**
-     * Makes the flow steps BDF2 steps (`time stepping/scheme = BDF2`, SurfaceStep::set_bdf2()); an input error
-     * unless every flow step iterates its geometry to the new time level (a lagged geometry is first order).
+     * The time scheme of the flow steps (`time stepping/scheme`, SurfaceStep::set_time_scheme()); BDF2 is an
+     * input error unless every flow step iterates its geometry to the new time level (a lagged geometry is
+     * first order).
      */
     void
-    set_bdf2(const bool on);
-    /// Whether ∂_t u is assembled (false: the Stokes limit, whose energy F is the bending energy alone).
-    bool
-    has_inertia() const
-    {
-      return step.flow.inertia;
-    }
-    /// The mesh quality below which a run stops (`mesh redistribution/mesh quality floor`).
-    double
-    mesh_quality_floor() const
-    {
-      return step.redistribution.mesh_quality_floor;
-    }
+    set_time_scheme(const TimeScheme::Kind kind);
 
     /// The DoFs of (u, p, κ, y, Y).
     const dealii::DoFHandler<2, 3> &
@@ -225,13 +203,13 @@ namespace FluidSurface
     unsigned int
     n_factorizations() const
     {
-      return step.n_factorizations();
+      return step.solver().n_factorizations();
     }
     /// Frees the kept LU factorization (MUMPS) while the rest of the program is still alive.
     void
     release_factorization()
     {
-      step.release_factorization();
+      step.solver().release_factorization();
     }
 
     /// Adds u, |u| and p to a DataOut.

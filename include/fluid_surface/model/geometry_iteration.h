@@ -113,4 +113,53 @@ namespace FluidSurface
   };
 } // namespace FluidSurface
 
+
+namespace FluidSurface
+{
+  class CheckpointData;
+
+  /**
+   * `geometry iteration/apply = after rejection`: after a rejected lagged step, the retry and the next K
+   * accepted steps iterate their geometry (checkpoint key `model/corrected steps left`).
+   */
+  class CorrectedSteps
+  {
+  public:
+    /// Whether the next flow step iterates its geometry under @p iteration.
+    bool
+    iterating(const GeometryIteration &iteration) const
+    {
+      return iteration.enabled() && (iteration.apply == GeometryIteration::Apply::always || left > 0);
+    }
+    /**
+     * A step was rejected: with apply = after rejection and no corrected steps under way (the rejected step was
+     * lagged), starts K corrected steps. Returns whether it did.
+     */
+    bool
+    start_after_rejection(const GeometryIteration &iteration)
+    {
+      if (!iteration.enabled() || iteration.apply != GeometryIteration::Apply::after_rejection || left > 0)
+        return false;
+      left = iteration.corrected_steps;
+      return true;
+    }
+    /// A step was accepted: one corrected step is used up.
+    void
+    accept()
+    {
+      if (left > 0)
+        --left;
+    }
+    /// Writes the count into a checkpoint (nothing while it is 0).
+    void
+    save(CheckpointData &data) const;
+    /// Reads it (0 if the checkpoint has none).
+    void
+    load(const CheckpointData &data);
+
+  private:
+    unsigned int left = 0;
+  };
+} // namespace FluidSurface
+
 #endif

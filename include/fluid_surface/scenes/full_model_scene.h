@@ -67,13 +67,18 @@ namespace FluidSurface
     Energies
     candidate_energies();
     /**
-     * Undoes the last step (of size @p tau, not solved or rejected for @p reason) and shrinks τ for its
+     * Undoes the last step (of size @p tau, not solved or rejected: @p failure, in one line @p reason; its
+     * advice comes from advice()) and shrinks τ for its
      * retry; RunFailed when τ would fall below τ_min. A non-empty @p solver_report (the linear solver's own
      * account of a failure) goes to error.log. @p factor > 0: shrink τ by it (the error control's) when it is
      * smaller than the shrink factor.
      */
     void
-    retry_step(const double tau, const std::string &reason, const std::string &solver_report, const double factor = 0);
+    retry_step(const double       tau,
+               const StepFailure  failure,
+               const std::string &reason,
+               const std::string &solver_report,
+               const double       factor = 0);
     /// Makes the solved step of size @p tau the current state; τ for the next step as the @p energy check says,
     /// or, with error control, as its @p error_estimate says.
     void

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <fluid_surface/model/time_scheme.h>
+
 #include <algorithm>
 #include <string>
 
@@ -90,11 +92,11 @@ namespace FluidSurface
     {
       return error_tolerance > 0;
     }
-    /// Whether the flow steps are BDF2 steps (`scheme = BDF2`) instead of backward Euler.
-    bool
-    bdf2() const
+    /// The time scheme of the flow steps (`scheme`).
+    TimeScheme::Kind
+    scheme() const
     {
-      return bdf2_scheme;
+      return scheme_kind;
     }
     /// ε_t of `error tolerance`.
     double
@@ -171,7 +173,7 @@ namespace FluidSurface
     unsigned int easy_steps;
     double       relative_energy_tolerance;
     double       error_tolerance = 0; ///< ε_t; 0: no error control
-    bool         bdf2_scheme = false; ///< `scheme = BDF2`
+    TimeScheme::Kind scheme_kind = TimeScheme::Kind::backward_euler; ///< `scheme`
     bool         adaptive;
 
     double       current_time = 0;

@@ -1,0 +1,129 @@
+#ifndef fluid_surface_model_time_scheme_h
+#define fluid_surface_model_time_scheme_h
+
+#include <fluid_surface/geometry/surface_geometry.h>
+
+#include <memory>
+#include <string>
+
+namespace FluidSurface
+{
+  class CheckpointData;
+  class RigidMotion;
+  class StepSystem;
+
+  /**
+   * The start of a step written in backward-Euler form, (x − x̂)/τ̂ = f(x): the step τ̂, the start x̂ (its u and
+   * its position X̂) and the fields whose velocity the convection lags. Refers to fields of the state or of the
+   * scheme, valid until the scheme's next start().
+   */
+  struct StepStart
+  {
+    double            tau;       ///< τ̂
+    const VectorType &position;  ///< X̂ (geometry numbering, ghosted)
+    const VectorType &fields;    ///< x̂ (flow numbering): û is the u of the inertia
+    const VectorType &transport; ///< the lagged fields of the convection (flow numbering)
+    /// Law reference: the frame velocity R is taken at the new time level (second order) instead of at X̂.
+    bool frame_velocity_on_new_surface;
+  };
+
+  /**
+   * A time scheme of the flow steps of scene full (`time stepping/scheme`): how a step of size τ from the
+   * accepted state is written in backward-Euler form (start()), and the history it keeps across accepted steps,
+   * in checkpoints too.
+   */
+  class TimeScheme
+  {
+  public:
+    /// The schemes of `time stepping/scheme`.
+    enum class Kind
+    {
+      backward_euler,
+      bdf2
+    };
+    /// The scheme @p kind.
+    static std::unique_ptr<TimeScheme>
+    create(const Kind kind);
+
+    virtual ~TimeScheme() = default;
+    /**
+     * The start of a step of size @p tau from X^m = @p old_position and x^m = @p old_fields. Law reference
+     * (@p carried_frame): the step is solved in the frame carried by the rigid motion @p carried.
+     */
+    virtual StepStart
+    start(const VectorType  &old_position,
+          const VectorType  &old_fields,
+          const StepSystem  &system,
+          const RigidMotion &carried,
+          const bool         carried_frame,
+          const double       tau) = 0;
+    /// The step of size @p tau from the accepted fields @p old_fields was accepted (called before they move on).
+    virtual void
+    accept(const VectorType &, const StepSystem &, const double)
+    {}
+    /// The next step starts afresh (the state jumped: a re-parametrization, a restart).
+    virtual void
+    forget_history()
+    {}
+    /// Writes the history into a checkpoint. Collective.
+    virtual void
+    save(CheckpointData &, const StepSystem &) const
+    {}
+    /// Reads it, if the checkpoint has it.
+    virtual void
+    load(const CheckpointData &, const StepSystem &)
+    {}
+  };
+
+  /// Backward Euler: x̂ = x^m, τ̂ = τ; no history.
+  class BackwardEuler : public TimeScheme
+  {
+  public:
+    StepStart
+    start(const VectorType  &old_position,
+          const VectorType  &old_fields,
+          const StepSystem  &system,
+          const RigidMotion &carried,
+          const bool         carried_frame,
+          const double       tau) override;
+  };
+
+  /**
+   * Variable-step BDF2 after a first backward-Euler step (and after each jump of the state), ω = τ/τ_p:
+   * (α₀x − (1+ω)x^m + ω²/(1+ω)x^{m−1})/τ = f, α₀ = (1+2ω)/(1+ω), i.e. the backward-Euler form of size τ/α₀ from
+   * x̂ = ((1+ω)x^m − ω²/(1+ω)x^{m−1})/α₀, with the convection lagged at u* = (1+ω)u^m − ωu^{m−1}. Keeps x^{m−1}
+   * and τ_p (checkpoint keys `model/previous step`, `previous state`).
+   */
+  class VariableBDF2 : public TimeScheme
+  {
+  public:
+    StepStart
+    start(const VectorType  &old_position,
+          const VectorType  &old_fields,
+          const StepSystem  &system,
+          const RigidMotion &carried,
+          const bool         carried_frame,
+          const double       tau) override;
+    void
+    accept(const VectorType &old_fields, const StepSystem &system, const double tau) override;
+    void
+    forget_history() override
+    {
+      previous_step = 0;
+    }
+    void
+    save(CheckpointData &data, const StepSystem &system) const override;
+    void
+    load(const CheckpointData &data, const StepSystem &system) override;
+
+  private:
+    BackwardEuler first_step;
+    /// x^{m−1} (flow numbering, ghosted) and the step τ_p that followed it; τ_p = 0: none.
+    VectorType previous_solution;
+    double     previous_step = 0;
+    /// x̂ and u* of the step under way, ghosted; X̂ in the geometry numbering.
+    VectorType start_fields, lagged_fields, start_position;
+  };
+} // namespace FluidSurface
+
+#endif

@@ -1,0 +1,82 @@
+#include <fluid_surface/io/run_stopped.h>
+#include <fluid_surface/model/bordered_solver.h>
+
+#include <cmath>
+
+namespace FluidSurface
+{
+  BorderedSolver::BorderedSolver()
+    : kept("Amesos_Mumps") // `direct solver = default` of scene full
+    , fresh("Amesos_Klu")
+  {}
+
+  void
+  BorderedSolver::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    kept.parse_parameters(prm);
+    ReusedFactorizationSolver::Parameters fresh_parameters = kept.get_parameters();
+    fresh_parameters.reuse_factorization                   = false;
+    fresh_parameters.direct_solver                         = "Amesos_Klu";
+    fresh.set_parameters(fresh_parameters);
+  }
+
+  BorderedSystem::BlockVector
+  BorderedSolver::initial_guess(const BorderedSystem &system,
+                                const VectorType     &rhs,
+                                const unsigned int    n_constraints) const
+  {
+    if (last_solution.n_blocks() == 2 && last_solution.block(1).size() == n_constraints)
+      return last_solution;
+    return system.make_vector(rhs);
+  }
+
+  BorderedSolver::Outcome
+  BorderedSolver::solve(const BorderedSystem        &system,
+                        const StepSystem            &step_system,
+                        const std::vector<double>   &values,
+                        const StepRequest::Solver    solver,
+                        BorderedSystem::BlockVector &solution)
+  {
+    Outcome                     outcome;
+    BorderedSystem::BlockVector rhs = system.make_vector(step_system.rhs());
+    rhs.block(0)                    = step_system.rhs();
+    BorderedSystem::set_multipliers(rhs, values);
+    ReusedFactorizationSolver &linear_solver = solver == StepRequest::Solver::fresh_klu ? fresh : kept;
+    try
+      {
+        linear_solver.matrix_changed(); // every step assembles its matrix on the new surface
+        BorderedFactorizationPreconditioner     preconditioner(system);
+        const ReusedFactorizationSolver::Result result =
+          linear_solver.solve(step_system.matrix(), system, solution, rhs, preconditioner);
+        preconditioner.enforce_constraints(solution, BorderedSystem::multipliers(rhs));
+        outcome.iterations  = result.iterations;
+        outcome.factorized  = result.factorized;
+        last_solution       = solution;
+        outcome.multipliers = BorderedSystem::multipliers(solution);
+      }
+    catch (const LinearSolverError &exc)
+      {
+        kept.request_factorization();
+        outcome.failure = StepFailure::linear_solver;
+        outcome.message = std::string("linear solver failed: ") + exc.what();
+        outcome.details = exc.details();
+        return outcome;
+      }
+    catch (const std::exception &exc)
+      {
+        kept.request_factorization();
+        outcome.failure = StepFailure::linear_solver;
+        outcome.message = "linear solver failed: " + one_line_message(exc, 200);
+        outcome.details = exc.what();
+        return outcome;
+      }
+    if (!std::isfinite(solution.block(0).l2_norm()))
+      {
+        outcome.failure = StepFailure::not_finite;
+        outcome.message = "the solution is not finite";
+        return outcome;
+      }
+    step_system.constraints().distribute(solution.block(0));
+    return outcome;
+  }
+} // namespace FluidSurface

@@ -1,0 +1,19 @@
+#include <fluid_surface/io/checkpoint.h>
+#include <fluid_surface/model/membrane_pull.h>
+
+namespace FluidSurface
+{
+  void
+  MembranePull::save(CheckpointData &data) const
+  {
+    if (accepted > 0)
+      data.set("model/membrane pull", accepted);
+  }
+
+  void
+  MembranePull::load(const CheckpointData &data)
+  {
+    accepted  = data.has("model/membrane pull") ? data.get_double("model/membrane pull") : 0;
+    candidate = accepted;
+  }
+} // namespace FluidSurface

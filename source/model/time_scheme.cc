@@ -1,0 +1,90 @@
+#include <fluid_surface/io/checkpoint.h>
+#include <fluid_surface/model/rigid_motion.h>
+#include <fluid_surface/model/step_system.h>
+#include <fluid_surface/model/time_scheme.h>
+
+namespace FluidSurface
+{
+  using namespace dealii;
+
+  std::unique_ptr<TimeScheme>
+  TimeScheme::create(const Kind kind)
+  {
+    if (kind == Kind::bdf2)
+      return std::make_unique<VariableBDF2>();
+    return std::make_unique<BackwardEuler>();
+  }
+
+  StepStart
+  BackwardEuler::start(const VectorType &old_position,
+                       const VectorType &old_fields,
+                       const StepSystem &,
+                       const RigidMotion &,
+                       const bool,
+                       const double tau)
+  {
+    return {tau, old_position, old_fields, old_fields, false};
+  }
+
+  StepStart
+  VariableBDF2::start(const VectorType  &old_position,
+                      const VectorType  &old_fields,
+                      const StepSystem  &system,
+                      const RigidMotion &carried,
+                      const bool         carried_frame,
+                      const double       tau)
+  {
+    if (previous_step == 0)
+      return first_step.start(old_position, old_fields, system, carried, carried_frame, tau);
+    // x̃^{m−1}: the previous state in the frame of the step (law reference: frame coordinates at t^m − τ_p,
+    // i.e. carried forward by τ_p; otherwise the previous state itself).
+    VectorType previous = system.owned_vector();
+    previous            = previous_solution;
+    if (carried_frame)
+      system.carry_fields(carried, previous_step, previous);
+    const double omega = tau / previous_step, alpha0 = (1 + 2 * omega) / (1 + omega);
+    VectorType   start = system.owned_vector(), lagged = system.owned_vector();
+    start  = old_fields;
+    lagged = start;
+    start.sadd((1 + omega) / alpha0, -omega * omega / ((1 + omega) * alpha0), previous);
+    lagged.sadd(1 + omega, -omega, previous);
+    start_fields  = system.ghosted_vector();
+    lagged_fields = system.ghosted_vector();
+    start_fields  = start;
+    lagged_fields = lagged;
+    const SurfaceGeometry &geometry = system.geometry();
+    start_position.reinit(geometry.locally_owned_dofs(), geometry.locally_relevant_dofs(), geometry.get_communicator());
+    start_position = system.new_position(start);
+    return {tau * (1 + omega) / (1 + 2 * omega), start_position, start_fields, lagged_fields, true};
+  }
+
+  void
+  VariableBDF2::accept(const VectorType &old_fields, const StepSystem &system, const double tau)
+  {
+    previous_solution = system.ghosted_vector();
+    previous_solution = old_fields;
+    previous_step     = tau;
+  }
+
+  void
+  VariableBDF2::save(CheckpointData &data, const StepSystem &system) const
+  {
+    if (previous_step == 0)
+      return;
+    data.set("model/previous step", previous_step);
+    data.set_fields("previous state", system.dof_handler(), {&previous_solution});
+  }
+
+  void
+  VariableBDF2::load(const CheckpointData &data, const StepSystem &system)
+  {
+    previous_step = 0;
+    if (!data.has("model/previous step"))
+      return;
+    VectorType x;
+    data.get_fields("previous state", system.dof_handler(), {&x});
+    previous_solution = system.ghosted_vector();
+    previous_solution = x;
+    previous_step     = data.get_double("model/previous step");
+  }
+} // namespace FluidSurface
