@@ -22,7 +22,7 @@ main(int argc, char **argv)
           SurfaceRun                     run("equilibrium", "1, 1, 1", r, branch, true);
           const AxisymmetricEquilibrium &shape    = *run.geometry.equilibrium_shape();
           const SurfaceGeometry::Measures m        = run.geometry.measure();
-          const double                    willmore = run.geometry.compute_curvature();
+          const double                    willmore = run.geometry.willmore_energy();
           const double                    error[3] = {std::abs(m.area / shape.area() - 1),
                                                       std::abs(m.volume / shape.volume() - 1),
                                                       std::abs(willmore / shape.bending_energy() - 1)};

@@ -7,36 +7,12 @@
 // (+6.9e-4 F(0): the coarse mesh's unstable semi-discrete mode), while refinement 3 gives −3.4e-3, −2.3e-3,
 // −1.5e-3 for τ = 0.005, 0.0025, 0.00125.
 #include "checkpoint_common.h"
+#include "statistics_columns.h"
 
 #include <cmath>
 #include <filesystem>
 #include <map>
 
-namespace
-{
-  /// The columns of a statistics file by name.
-  std::map<std::string, std::vector<double>>
-  read_columns(const std::string &file)
-  {
-    std::ifstream                              in(file);
-    std::vector<std::string>                   names;
-    std::map<std::string, std::vector<double>> columns;
-    for (std::string line; std::getline(in, line);)
-      {
-        if (line.rfind("# ", 0) == 0)
-          {
-            const auto colon = line.find(": ");
-            names.push_back(line.substr(colon + 2));
-            continue;
-          }
-        std::istringstream words(line);
-        double             value;
-        for (unsigned int c = 0; c < names.size() && (words >> value); ++c)
-          columns[names[c]].push_back(value);
-      }
-    return columns;
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -58,7 +34,7 @@ main(int argc, char **argv)
           all.push_back({"time stepping/time step", std::to_string(tau)});
           all.push_back({"time stepping/end time", "0.1"});
           const Outcome outcome = run("run", all);
-          auto          stats   = read_columns("run/statistics");
+          auto          stats   = read_statistics_columns("run/statistics");
           const auto   &F = stats["total energy"], &D = stats["dissipation rate"], &steps = stats["tau"];
           const auto   &t = stats["time"];
           // B over [0, T] and over the second half [T/2, T], after the initial layer of u (u jumps from u0 on the

@@ -40,7 +40,7 @@ main(int argc, char **argv)
               geometry.parse_parameters(prm);
               geometry.create();
               const SurfaceGeometry::Measures m = geometry.measure();
-              const double                    w = geometry.compute_curvature();
+              const double                    w = geometry.willmore_energy();
               const double err[3] = {std::abs(m.area - exact.area) / exact.area,
                                      std::abs(m.volume - exact.volume) / exact.volume,
                                      std::abs(w - exact.willmore) / exact.willmore};

@@ -262,7 +262,10 @@ main(int argc, char **argv)
     {
       const auto [status, message] =
         run_file("subsection equilibrium\n  set output file = fuzz.csv\n" + extra + "end\n", "--equilibrium");
+      // Where the continuation stalls beyond the fold depends on round-off (it differs between machines): the
+      // test checks the message, not that value.
+      const std::string stable = std::regex_replace(message, std::regex("stalled at L = [-+.0-9e]+"), "stalled at L = …");
       std::cout << "--equilibrium with" << extra.substr(5, extra.size() - 6) << ": exit " << status
-                << (message.empty() ? "" : ": ") << message << std::endl;
+                << (stable.empty() ? "" : ": ") << stable << std::endl;
     }
 }

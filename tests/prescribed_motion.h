@@ -52,7 +52,6 @@ namespace FluidSurface
       const auto result = model.advance(tau);
       if (!result.solved)
         throw std::runtime_error(result.message);
-      geometry.compute_curvature();
       time += tau;
       model.accept(time);
     }

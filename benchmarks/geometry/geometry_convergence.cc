@@ -1,8 +1,8 @@
 // Work-precision benchmark of the surface geometry: for the prolate [0.61, 0.61, 2.02] and oblate
 // [1.27, 1.27, 0.47] spheroids and geometry degree k = 1, 2, 3, the relative errors of the area,
-// the enclosed volume and the Willmore energy ½∫H² (weak curvature, SurfaceGeometry::compute_curvature())
+// the enclosed volume and the Willmore energy ½∫H² (weak curvature, SurfaceGeometry::willmore_energy())
 // against exact_spheroid_measures(), the number of position DoFs, and the wall time of
-// create() + measure() + compute_curvature() (median of the repetitions).
+// create() + measure() + willmore_energy() (median of the repetitions).
 //
 // Usage: geometry_convergence [--quick] [--repetitions N] [--max-time SECONDS] [--finest R1,R2,R3]
 // (--finest: the finest refinement for k = 1, 2, 3; default 6,5,4, with --quick 4,3,2)
@@ -56,7 +56,7 @@ namespace
       const auto start = std::chrono::steady_clock::now();
       geometry.create();
       const SurfaceGeometry::Measures m = geometry.measure();
-      const double                    w = geometry.compute_curvature();
+      const double                    w = geometry.willmore_energy();
       const auto                      stop = std::chrono::steady_clock::now();
 
       r.seconds  = std::chrono::duration<double>(stop - start).count();

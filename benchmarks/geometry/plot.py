@@ -59,7 +59,7 @@ for row_index, (shape, title) in enumerate(shapes):
     axes[row_index][0].set_title(f"{title}: error against DoFs")
     axes[row_index][1].set_title(f"{title}: error against wall time")
     axes[row_index][0].set_xlabel("position DoFs")
-    axes[row_index][1].set_xlabel("wall time of create + measure + compute_curvature [s] (median of 3)")
+    axes[row_index][1].set_xlabel("wall time of create + measure + willmore_energy [s] (median of 3)")
     axes[row_index][0].set_ylabel("relative error")
     for ax in axes[row_index]:
         ax.grid(True, which="major", alpha=0.4)

@@ -44,7 +44,6 @@ main(int argc, char **argv)
   output.parse_parameters(prm);
   output.prepare_directory(comm, false);
   geometry.create();
-  geometry.compute_curvature();
 
   const SpeedPostprocessor speed;
   const auto               add_fields = [&](dealii::DataOut<2, 3> &data_out) {

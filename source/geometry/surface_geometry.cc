@@ -245,9 +245,7 @@ namespace FluidSurface
     constraints.close();
 
     position_ghosted.reinit(owned_dofs, relevant_dofs, communicator);
-    curvature_ghosted.reinit(owned_dofs, relevant_dofs, communicator);
-    normal_ghosted.reinit(owned_dofs, relevant_dofs, communicator);
-    mean_curvature_ghosted.reinit(owned_dofs, relevant_dofs, communicator);
+    derived_current = false;
     surface_mapping = std::make_unique<MappingFEField<2, 3, VectorType>>(position_dofs, position_ghosted);
   }
 
@@ -259,6 +257,26 @@ namespace FluidSurface
     // Hanging nodes must follow their parents, or the surface cracks.
     constraints.distribute(owned);
     position_ghosted = owned;
+    derived_current  = false;
+  }
+
+  void
+  SurfaceGeometry::set_position(const VectorType &new_position, const Curvature &new_curvature)
+  {
+    set_position(new_position);
+    derived         = new_curvature;
+    derived_current = true;
+  }
+
+  const SurfaceGeometry::Curvature &
+  SurfaceGeometry::curvature() const
+  {
+    if (!derived_current)
+      {
+        derived         = compute_curvature();
+        derived_current = true;
+      }
+    return derived;
   }
 
   namespace
@@ -435,37 +453,38 @@ namespace FluidSurface
   }
 
   void
-  SurfaceGeometry::normalize_normal_field()
+  SurfaceGeometry::normalize_normal_field(VectorType &normal) const
   {
     VectorType owned(owned_dofs, communicator);
-    owned = normal_ghosted;
-    const VectorType &n = normal_ghosted;
+    owned = normal;
+    const VectorType &n = normal;
     for_each_owned_node(position_dofs, [&](const std::array<types::global_dof_index, 3> &node) {
       const double norm = std::sqrt(n[node[0]] * n[node[0]] + n[node[1]] * n[node[1]] + n[node[2]] * n[node[2]]);
       for (unsigned int d = 0; d < 3; ++d)
         owned[node[d]] = n[node[d]] / norm;
     });
     owned.compress(VectorOperation::insert);
-    normal_ghosted = owned;
+    normal = owned;
   }
 
   void
-  SurfaceGeometry::update_nodal_mean_curvature()
+  SurfaceGeometry::update_nodal_mean_curvature(Curvature &curvature) const
   {
     VectorType        owned(owned_dofs, communicator);
-    const VectorType &n = normal_ghosted;
-    const VectorType &k = curvature_ghosted;
+    const VectorType &n = curvature.normal;
+    const VectorType &k = curvature.vector;
     for_each_owned_node(position_dofs, [&](const std::array<types::global_dof_index, 3> &node) {
       const double h = k[node[0]] * n[node[0]] + k[node[1]] * n[node[1]] + k[node[2]] * n[node[2]];
       for (unsigned int d = 0; d < 3; ++d)
         owned[node[d]] = h;
     });
     owned.compress(VectorOperation::insert);
-    mean_curvature_ghosted = owned;
+    curvature.mean_curvature.reinit(owned_dofs, relevant_dofs, communicator);
+    curvature.mean_curvature = owned;
   }
 
   double
-  SurfaceGeometry::willmore_energy() const
+  SurfaceGeometry::integrate_willmore_energy(const VectorType &kappa_field) const
   {
     const QGauss<2>                  q = quadrature();
     const FEValuesExtractors::Vector vec(0);
@@ -476,15 +495,15 @@ namespace FluidSurface
       if (cell->is_locally_owned())
         {
           fe_values_kappa.reinit(cell);
-          fe_values_kappa[vec].get_function_values(curvature_ghosted, kappa);
+          fe_values_kappa[vec].get_function_values(kappa_field, kappa);
           for (unsigned int k = 0; k < q.size(); ++k)
             local_energy += 0.5 * kappa[k].norm_square() * fe_values_kappa.JxW(k);
         }
     return Utilities::MPI::sum(local_energy, communicator);
   }
 
-  double
-  SurfaceGeometry::compute_curvature()
+  SurfaceGeometry::Curvature
+  SurfaceGeometry::compute_curvature() const
   {
     TrilinosWrappers::SparseMatrix mass;
     VectorType                     rhs_curvature, rhs_normal;
@@ -500,10 +519,14 @@ namespace FluidSurface
       constraints.distribute(solution);
       ghosted = solution;
     };
-    solve(rhs_curvature, curvature_ghosted);
-    solve(rhs_normal, normal_ghosted);
-    normalize_normal_field();
-    update_nodal_mean_curvature();
-    return willmore_energy();
+    Curvature curvature;
+    curvature.vector.reinit(owned_dofs, relevant_dofs, communicator);
+    curvature.normal.reinit(owned_dofs, relevant_dofs, communicator);
+    solve(rhs_curvature, curvature.vector);
+    solve(rhs_normal, curvature.normal);
+    normalize_normal_field(curvature.normal);
+    update_nodal_mean_curvature(curvature);
+    curvature.willmore_energy = integrate_willmore_energy(curvature.vector);
+    return curvature;
   }
 } // namespace FluidSurface

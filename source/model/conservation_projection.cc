@@ -35,8 +35,9 @@ namespace FluidSurface
   }
 
   double
-  ConservationProjection::project_area_and_volume(SurfaceGeometry &geometry,
-                                                  const double     target_area,
+  ConservationProjection::project_area_and_volume(SurfaceGeometry                  &geometry,
+                                                  const SurfaceGeometry::Curvature &modes,
+                                                  const double                      target_area,
                                                   const double     target_volume,
                                                   const bool       hold_volume) const
   {
@@ -44,8 +45,8 @@ namespace FluidSurface
     const IndexSet  &owned = geometry.locally_owned_dofs();
     // The two modes ñ and Hñ at the nodes (H repeated in the three components of a node).
     VectorType normal(owned, comm), curved(owned, comm);
-    normal = geometry.normal_field();
-    curved = geometry.mean_curvature_nodes();
+    normal = modes.normal;
+    curved = modes.mean_curvature;
     curved.scale(normal);
     const FEValuesExtractors::Vector vector(0);
     double                           largest = 0;
@@ -66,8 +67,8 @@ namespace FluidSurface
           if (cell->is_locally_owned())
             {
               fe_values.reinit(cell);
-              fe_values[vector].get_function_values(geometry.normal_field(), n);
-              fe_values[vector].get_function_values(geometry.curvature_vector(), h);
+              fe_values[vector].get_function_values(modes.normal, n);
+              fe_values[vector].get_function_values(modes.vector, h);
               for (unsigned int k = 0; k < q.size(); ++k)
                 {
                   const Tensor<1, 3> &nu = fe_values.normal_vector(k);

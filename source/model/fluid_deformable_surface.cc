@@ -222,7 +222,6 @@ namespace FluidSurface
     state.position                    = geometry.position();
     state.reference_surface           = geometry.position();
     set_reference_position();
-    geometry.compute_curvature();
   }
 
   void
@@ -290,8 +289,9 @@ namespace FluidSurface
   FluidDeformableSurface::accept(const double time)
   {
     step.accept_history(); // before the state moves on: BDF2 keeps it as x^{m−1}
-    state.position = geometry.position();
-    state.solution = step.candidate();
+    state.position  = geometry.position();
+    state.curvature = geometry.curvature();
+    state.solution  = step.candidate();
     const double anchor_time = step.components().redistribution.anchor_time;
     if (anchored || anchor_time < 0 || time < anchor_time)
       return false;
@@ -312,8 +312,10 @@ namespace FluidSurface
   {
     VectorType position(geometry.locally_owned_dofs(), geometry.get_communicator());
     position = state.position;
-    geometry.set_position(position);
-    geometry.compute_curvature();
+    if (state.curvature)
+      geometry.set_position(position, *state.curvature);
+    else
+      geometry.set_position(position);
     step.solver().request_factorization();
   }
 
@@ -321,6 +323,7 @@ namespace FluidSurface
   FluidDeformableSurface::restart_from(const SurfaceState &new_state)
   {
     state = new_state;
+    state.curvature.reset(); // new_state's position need not be the one its curvature was taken of
     VectorType position(geometry.locally_owned_dofs(), geometry.get_communicator());
     position = state.position;
     geometry.set_position(position);
@@ -332,7 +335,6 @@ namespace FluidSurface
     set_reference_position();
     step.forget_history();
     step.solver().request_factorization();
-    geometry.compute_curvature();
   }
 
   SurfaceReparametrization::Result
@@ -340,7 +342,7 @@ namespace FluidSurface
   {
     const SurfaceReparametrization::Result result =
       reparametrization.reparametrize(step, state, run_request, [&]() {
-        return total_energy(kinetic_energy(state.solution), geometry.compute_curvature());
+        return total_energy(kinetic_energy(state.solution), geometry.willmore_energy());
       });
     if (result.done)
       step.forget_history(); // the transferred state has no history
@@ -396,11 +398,10 @@ namespace FluidSurface
     reparametrization.load(data);
     step.load_history(data);
     anchored = data.has("model/anchored");
-    geometry.compute_curvature();
   }
 
   void
-  FluidDeformableSurface::set_time_scheme(const TimeScheme::Kind kind)
+  FluidDeformableSurface::set_time_scheme(const TimeScheme::Kind kind, const TimeScheme::Frame frame)
   {
     const bool on = kind == TimeScheme::Kind::bdf2;
     const GeometryIteration &iteration = step.components().geometry_iteration;
@@ -410,6 +411,6 @@ namespace FluidSurface
                           "BDF2",
                           "'backward Euler', or 'geometry iteration/maximum iterations' ≥ 1 with apply = always and "
                           "time level = 1 (BDF2 needs the geometry of t + τ; a lagged geometry is first order)");
-    step.set_time_scheme(kind);
+    step.set_time_scheme(kind, frame);
   }
 } // namespace FluidSurface

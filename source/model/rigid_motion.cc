@@ -59,6 +59,61 @@ namespace FluidSurface
 
 
   RigidMotion
+  RigidMotion::tisserand(const SurfaceGeometry &geometry, const DoFHandler<2, 3> &dofs, const VectorType &state)
+  {
+    const FiniteElement<2, 3>       &fe = dofs.get_fe();
+    const QGauss<2>                  q(fe.degree + 1);
+    FEValues<2, 3>                   fe_values(geometry.mapping(), fe, q,
+                                               update_values | update_quadrature_points | update_JxW_values);
+    const FEValuesExtractors::Vector velocity(DofLayout::velocity_component);
+    std::vector<Tensor<1, 3>>        u(q.size());
+    // [0..5] (r_k, u) about the origin; [6] |S|; [7..9] ∫x; [10..18] ∫x ⊗ x.
+    std::array<double, 19> sums{};
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[velocity].get_function_values(state, u);
+          for (unsigned int k = 0; k < q.size(); ++k)
+            {
+              const double        dA = fe_values.JxW(k);
+              const Point<3>     &x  = fe_values.quadrature_point(k);
+              const Tensor<1, 3>  L  = cross_product_3d(x, u[k]);
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  sums[d] += u[k][d] * dA;
+                  sums[3 + d] += L[d] * dA;
+                  sums[7 + d] += x[d] * dA;
+                  for (unsigned int e = 0; e < 3; ++e)
+                    sums[10 + 3 * d + e] += x[d] * x[e] * dA;
+                }
+              sums[6] += dA;
+            }
+        }
+    Utilities::MPI::sum(ArrayView<const double>(sums.data(), sums.size()), geometry.get_communicator(),
+                        ArrayView<double>(sums.data(), sums.size()));
+    RigidMotion motion;
+    std::copy(sums.begin(), sums.begin() + 6, motion.momenta.begin());
+    const double area = sums[6];
+    Tensor<1, 3> P, L, c;
+    Tensor<2, 3> second_moment;
+    for (unsigned int d = 0; d < 3; ++d)
+      {
+        P[d] = sums[d];
+        L[d] = sums[3 + d];
+        c[d] = sums[7 + d] / area;
+        for (unsigned int e = 0; e < 3; ++e)
+          second_moment[d][e] = sums[10 + 3 * d + e] - area * c[d] * c[e];
+      }
+    // I = tr(M) 1 − M with M = ∫(x − x_c) ⊗ (x − x_c); L about x_c is L − x_c × P.
+    const Tensor<2, 3> inertia = trace(second_moment) * unit_symmetric_tensor<3>() - second_moment;
+    motion.centre              = Point<3>(c);
+    motion.translation         = P / area;
+    motion.rotation            = invert(inertia) * (L - cross_product_3d(c, P));
+    return motion;
+  }
+
+  RigidMotion
   RigidMotion::fit(const SurfaceGeometry    &geometry,
                    const DoFHandler<2, 3>   &dofs,
                    const VectorType         &state,

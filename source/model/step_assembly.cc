@@ -106,7 +106,9 @@ namespace FluidSurface
         // In the carried frame (ũ = Qᵀu, the new position relative to the carry) the frame's rotation adds
         // (Ω × ũ, v), and the mesh velocity in the convection is R + (Ỹ − X^m)/τ, i.e. W = X^m − τR.
         const Point<3> frame_point = data.frame_velocity_on_new_surface ? p.position : old_point;
-        const Point<3> start       = carried_frame ? old_point - tau * data.carried.value(frame_point) : old_point;
+        const Point<3> start       = carried_frame && !data.relative_transport ?
+                                       old_point - tau * data.carried.value(frame_point) :
+                                       old_point;
         for (const unsigned int i : layout.velocity)
           {
             if (flow.inertia)
@@ -215,12 +217,14 @@ namespace FluidSurface
     };
 
     /// Mesh law bgn: (∇_S Y, ∇_S η) defines κ and moves the nodes tangentially; the kinematics and the
-    /// tangential damping towards X^m + τR at the nodes.
+    /// tangential damping towards X^m + τR at the nodes (in the co-rotating frame: Ỹ·ñ = X^m·ñ + τ(ũ − R)·ñ,
+    /// damped towards X^m).
     class BgnMeshLawTerm : public StepTerm
     {
     public:
-      explicit BgnMeshLawTerm(const MeshRedistribution &redistribution)
+      BgnMeshLawTerm(const MeshRedistribution &redistribution, const bool co_rotating)
         : redistribution(redistribution)
+        , co_rotating(co_rotating)
       {}
       void
       gauss_point(const unsigned int, CellContext &cell) const override
@@ -233,6 +237,14 @@ namespace FluidSurface
         const StepAssemblyData &data = *cell.data;
         const Point<3>          x(cell.nodal_old_position[q]);
         LocalSystem            &local = *cell.local;
+        if (co_rotating)
+          {
+            const Point<3> frame_point = data.frame_velocity_on_new_surface ? cell.nodal.position : x;
+            redistribution.assemble_kinematics(
+              cell.nodal, *cell.layout, data.tau, x - data.tau * data.carried.value(frame_point), local.matrix, local.rhs);
+            redistribution.assemble_nodal_terms(cell.nodal, *cell.layout, data.tau, x, local.matrix, local.rhs);
+            return;
+          }
         redistribution.assemble_kinematics(cell.nodal, *cell.layout, data.tau, x, local.matrix, local.rhs);
         redistribution.assemble_nodal_terms(
           cell.nodal, *cell.layout, data.tau, x + data.tau * data.carried.value(x), local.matrix, local.rhs);
@@ -240,6 +252,7 @@ namespace FluidSurface
 
     private:
       const MeshRedistribution &redistribution;
+      const bool                co_rotating;
     };
 
     /**
@@ -361,7 +374,10 @@ namespace FluidSurface
     };
   } // namespace
 
-  StepAssembly::StepAssembly(const StepComponents &components, const StepRequest &request, StepSystem &system)
+  StepAssembly::StepAssembly(const StepComponents &components,
+                             const StepRequest    &request,
+                             const bool            co_rotating,
+                             StepSystem           &system)
     : components(components)
     , system(system)
     , rigid(components.momentum_constraints.active())
@@ -371,14 +387,14 @@ namespace FluidSurface
       terms.push_back(std::make_unique<PrescribedVelocityTerm>(*request.prescribed_velocity()));
     else
       {
-        terms.push_back(std::make_unique<FlowTerm>(components, reference));
+        terms.push_back(std::make_unique<FlowTerm>(components, reference || co_rotating));
         terms.push_back(std::make_unique<BendingForceTerm>(components.bending));
       }
     terms.push_back(std::make_unique<BendingScalarTerm>(components.bending));
     if (reference)
       terms.push_back(std::make_unique<ReferenceMeshLawTerm>(components.redistribution));
     else
-      terms.push_back(std::make_unique<BgnMeshLawTerm>(components.redistribution));
+      terms.push_back(std::make_unique<BgnMeshLawTerm>(components.redistribution, co_rotating));
     terms.push_back(std::make_unique<VolumeColumnTerm>(components.volume_constraint));
     if (rigid)
       terms.push_back(std::make_unique<MomentumConstraintTerm>(components.momentum_constraints));
@@ -419,6 +435,11 @@ namespace FluidSurface
         context.transport_velocity = context.old_velocity;
       context.flow[vector].get_function_gradients(data.transport_fields, context.old_velocity_gradient);
       context.geometry[vector].get_function_values(data.old_position, context.old_position);
+      if (data.relative_transport)
+        for (unsigned int q = 0; q < context.flow.n_quadrature_points; ++q)
+          context.transport_velocity[q] -= data.carried.value(data.frame_velocity_on_new_surface ?
+                                                                context.flow.quadrature_point(q) :
+                                                                Point<3>(context.old_position[q]));
       for (const auto &term : terms)
         term->reinit_cell(context);
 

@@ -291,7 +291,6 @@ namespace FluidSurface
       VectorType position(geometry.locally_owned_dofs(), comm);
       position = kept_position;
       geometry.set_position(position);
-      geometry.compute_curvature();
       step.solver().request_factorization();
       result.failure = why;
       return result;
@@ -331,21 +330,19 @@ namespace FluidSurface
           transfer(geometry, surface, geometry.position(), dofs, fields, state);
           surface = geometry.position();
           fields  = state;
-          geometry.compute_curvature();
         }
       if (!failure.empty())
         return restore("the relaxation of the mesh failed: " + failure);
     }
-    geometry.compute_curvature();
     // The relaxed surface differs from the old one by its interpolation error, far more than a step's drift:
     // the projection's modes ñ, Hñ are those of the surface it starts from, so it is repeated on the
     // projected surface.
     if (conservation.enabled && run_request.prescribed_velocity() == nullptr)
       for (unsigned int pass = 0; pass < 2; ++pass)
         {
+          const SurfaceGeometry::Curvature modes = geometry.curvature();
           result.node_correction += conservation.project_area_and_volume(
-            geometry, accepted.target_area, accepted.target_volume, step.components().volume_constraint.enabled);
-          geometry.compute_curvature();
+            geometry, modes, accepted.target_area, accepted.target_volume, step.components().volume_constraint.enabled);
         }
     step.copy_position_into(geometry.position(), state);
     if (!std::isfinite(state.l2_norm()))
@@ -375,7 +372,6 @@ namespace FluidSurface
         step.solver().request_factorization();
       }
 
-    geometry.compute_curvature();
     result.quality_after = geometry.measure().mesh_quality;
     // A worse mesh is not taken (a relaxation that changes nothing, as on the initial mesh, is).
     if (!(result.quality_after >= (1 - 1e-3) * result.quality_before))

@@ -44,6 +44,7 @@ namespace FluidSurface
     solution = fields;
     geometry.set_position(surface);
     position = geometry.position();
+    curvature.reset();
     VectorType initial;
     data.get_fields("mesh reference", geometry.dof_handler(), {&initial});
     reference_surface = initial;

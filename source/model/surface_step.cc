@@ -61,11 +61,15 @@ namespace FluidSurface
     const RigidMotion &motion; ///< the rigid motion of the shape and the momenta of u^m
     const RigidMotion  carried; ///< the rigid motion the mesh follows (none: RigidMotion())
     const bool         carried_frame; ///< law reference: the step is solved in the frame carried by `motion`
+    const bool         co_rotating;   ///< the frame is the Tisserand frame of u^m (TimeScheme::co_rotating())
     const SurfaceGeometry::Measures old_measures; ///< of S^m
-    const VectorType  &old_normal;                ///< ñ^m
+    const SurfaceGeometry::Curvature &old_curvature; ///< of S^m
     const double       membrane_weight;
     const StepAssembly assembly;
     GlobalConstraints  constraints;
+    /// The curvature of the last surface the step evaluated (S^m, or the last iterate of the geometry): the
+    /// modes of the area and volume projection.
+    SurfaceGeometry::Curvature evaluated_curvature;
   };
 
   SurfaceStep::SurfaceStep(SurfaceGeometry &geometry, const SurfaceState &state)
@@ -91,9 +95,9 @@ namespace FluidSurface
   }
 
   void
-  SurfaceStep::set_time_scheme(const TimeScheme::Kind kind)
+  SurfaceStep::set_time_scheme(const TimeScheme::Kind kind, const TimeScheme::Frame frame)
   {
-    time_scheme = TimeScheme::create(kind);
+    time_scheme = TimeScheme::create(kind, frame);
   }
 
   void
@@ -165,6 +169,7 @@ namespace FluidSurface
             state.reference_position,
             step.carried,
             step.start.frame_velocity_on_new_surface,
+            step.co_rotating,
             area_rate,
             state.target_area / geometry.measure().area,
             step.membrane_weight};
@@ -267,7 +272,6 @@ namespace FluidSurface
     using Implicit                     = GeometryIteration::Implicit;
     const double node_spacing =
       std::sqrt(step.old_measures.area / geometry.triangulation().n_global_active_cells()) / geometry.degree();
-    VectorType iterate_normal;
     bool       converged = false;
     // The surface Ỹ_k the step is assembled on; the next one from Ỹ_k and G(Ỹ_k), the solve's new position.
     VectorType             surface = solution.block(0);
@@ -289,15 +293,15 @@ namespace FluidSurface
           }
         {
           TimerSection section(step_timer, "assembly");
-          geometry.compute_curvature();
+          step.evaluated_curvature = geometry.curvature();
           if (iteration.implicit == Implicit::normal)
             {
-              iterate_normal = geometry.normal_field();
               restore_old_geometry();
-              assemble(step, iterate_normal);
+              assemble(step, step.evaluated_curvature.normal);
             }
           else
-            assemble(step, iteration.implicit == Implicit::metric ? step.old_normal : geometry.normal_field());
+            assemble(step,
+                     iteration.implicit == Implicit::metric ? step.old_curvature.normal : geometry.normal_field());
           if (step.constraints.rigid_rows && parts.flow.inertia && iteration.implicit != Implicit::normal)
             set_constraint_values(rigid_motion(step.request, state.solution).momenta, step.constraints);
         }
@@ -328,7 +332,7 @@ namespace FluidSurface
       result.error_estimate = error_estimate.estimate(system,
                                                       x,
                                                       state.position,
-                                                      step.old_normal,
+                                                      step.old_curvature.normal,
                                                       step.tau,
                                                       std::sqrt(step.old_measures.area / (4 * numbers::PI)));
     candidate_solution = x;
@@ -346,7 +350,7 @@ namespace FluidSurface
     if (conservation.enabled && request.prescribed_velocity() == nullptr)
       {
         result.node_correction = conservation.project_area_and_volume(
-          geometry, state.target_area, state.target_volume, parts.volume_constraint.enabled);
+          geometry, step.evaluated_curvature, state.target_area, state.target_volume, parts.volume_constraint.enabled);
         VectorType projected = system.owned_vector();
         projected            = candidate_solution;
         system.copy_position_into(geometry.position(), projected);
@@ -370,18 +374,23 @@ namespace FluidSurface
     // constant parts of the momentum constraints).
     const bool need_motion = (redistribution.follow_rigid_motion && (redistribution.relaxation_time > 0 || reference)) ||
                              (parts.momentum_constraints.active() && parts.flow.inertia);
-    const RigidMotion motion = need_motion ? rigid_motion(request, state.solution) : RigidMotion();
-    // Law reference solves the step in the frame carried by the rigid motion of the shape.
-    const bool carried_frame = reference && redistribution.follow_rigid_motion;
+    // The co-rotating flow steps are solved in the Tisserand frame of u^m; law reference solves the others in the
+    // frame carried by the rigid motion of the shape.
+    const bool co_rotating = time_scheme->co_rotating() && flow_step && request.global_constraints;
+    const RigidMotion motion = co_rotating ? RigidMotion::tisserand(geometry, system.dof_handler(), state.solution) :
+                               need_motion ? rigid_motion(request, state.solution) :
+                                             RigidMotion();
+    const bool carried_frame = co_rotating || (reference && redistribution.follow_rigid_motion);
     // X^m: the accepted state's surface; the valve's solves move the geometry itself between them.
     TimeScheme     &scheme = flow_step && request.global_constraints ? *time_scheme : backward_euler;
     const StepStart start  = scheme.start(
       flow_step ? state.position : geometry.position(), state.solution, system, motion, carried_frame, tau);
     // The mesh moves along with the rigid motion R of the shape (fit of u^m·ν): law bgn relaxes towards
     // X^m + τR, law reference carries the nodes by the rotation itself.
-    const bool carry = redistribution.follow_rigid_motion && (reference || redistribution.damping(start.tau) > 0);
+    const bool carry =
+      co_rotating || (redistribution.follow_rigid_motion && (reference || redistribution.damping(start.tau) > 0));
     const SurfaceGeometry::Measures old_measures = geometry.measure();
-    const VectorType                old_normal(geometry.normal_field()); // ñ^m (the geometry may be iterated)
+    const SurfaceGeometry::Curvature old_curvature = geometry.curvature(); // of S^m (the geometry may be iterated)
     // The valve's relaxation solves (velocity at rest) always pull with full weight.
     const double membrane_weight =
       flow_step ? membrane_pull.flow_step_weight(redistribution, old_measures.mesh_quality) : 1.0;
@@ -391,11 +400,13 @@ namespace FluidSurface
                       motion,
                       carry ? motion : RigidMotion(),
                       carried_frame,
+                      co_rotating,
                       old_measures,
-                      old_normal,
+                      old_curvature,
                       membrane_weight,
-                      StepAssembly(parts, request, system),
-                      {}};
+                      StepAssembly(parts, request, co_rotating, system),
+                      {},
+                      old_curvature};
     {
       TimerSection section(step_timer, "assembly");
       assemble(step, geometry.normal_field());

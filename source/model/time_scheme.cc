@@ -8,11 +8,16 @@ namespace FluidSurface
   using namespace dealii;
 
   std::unique_ptr<TimeScheme>
-  TimeScheme::create(const Kind kind)
+  TimeScheme::create(const Kind kind, const Frame frame)
   {
+    std::unique_ptr<TimeScheme> scheme;
     if (kind == Kind::bdf2)
-      return std::make_unique<VariableBDF2>();
-    return std::make_unique<BackwardEuler>();
+      scheme = std::make_unique<VariableBDF2>();
+    else
+      scheme = std::make_unique<BackwardEuler>();
+    if (frame == Frame::tisserand)
+      return std::make_unique<CoRotatingFrame>(std::move(scheme));
+    return scheme;
   }
 
   StepStart

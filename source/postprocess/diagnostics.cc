@@ -520,7 +520,10 @@ namespace FluidSurface
       }
     area_drift   = std::max(area_drift, std::abs(v.area - initial.area) / initial.area);
     volume_drift = std::max(volume_drift, std::abs(v.volume - initial.volume) / initial.volume);
-    const double L0 = initial.angular_momentum.norm();
+    // The scale of L: |L₀|, or |P₀|R (R = √(A₀/4π)) for a translating body whose |L₀| is round-off (a drift of
+    // round-off over round-off says nothing, and differs between machines).
+    const double L0 = std::max(initial.angular_momentum.norm(),
+                               initial.linear_momentum.norm() * std::sqrt(initial.area / (4 * numbers::PI)));
     if (L0 > 0)
       angular_momentum_drift =
         std::max(angular_momentum_drift, (v.angular_momentum - initial.angular_momentum).norm() / L0);

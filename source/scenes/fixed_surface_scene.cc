@@ -348,7 +348,6 @@ namespace FluidSurface
   {
     wall_timer.restart();
     last_results = Results();
-    geometry.compute_curvature(); // ñ (continuous penalty normal) and H for the output
 
     SurfaceFlow     flow(geometry, flow_parameters);
     const FlowField exact         = set_up_problem(flow);

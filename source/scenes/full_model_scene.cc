@@ -36,7 +36,7 @@ namespace FluidSurface
     energy_control = EnergyStepController(time.energy_tolerance());
     model.parse_parameters(prm, time.maximum_step_size());
     model.set_error_estimation(time.error_control());
-    model.set_time_scheme(time.scheme());
+    model.set_time_scheme(time.scheme(), time.frame());
     diagnostics.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
     steady_state.parse_parameters(prm);
@@ -206,7 +206,7 @@ namespace FluidSurface
   {
     TimerOutput::Scope section(computing_timer, "curvature and energy");
     Energies           candidate;
-    candidate.willmore = geometry.compute_curvature();
+    candidate.willmore = geometry.willmore_energy();
     candidate.total    = model.total_energy(model.kinetic_energy(model.candidate_solution()), candidate.willmore);
     return candidate;
   }
@@ -262,7 +262,7 @@ namespace FluidSurface
                               model.components().bending.Be,
                               report);
     pcout << report.str() << std::flush;
-    willmore = geometry.compute_curvature();
+    willmore = geometry.willmore_energy();
     record_step(0.0, SurfaceStep::Result());
     write_output();
   }
@@ -285,7 +285,7 @@ namespace FluidSurface
     energy_control.load(data);
     steady_state.load(data);
     wall_time_before_restart = data.get_double("simulation/wall time");
-    willmore                 = geometry.compute_curvature();
+    willmore                 = geometry.willmore_energy();
     // The restored fields must reproduce the energy recorded with them (to rounding: the rank count may differ).
     const double energy = model.total_energy(model.kinetic_energy(), willmore);
     if (!(std::abs(energy - total_energy) <= 1e-10 * std::abs(total_energy)))
@@ -327,7 +327,7 @@ namespace FluidSurface
     };
     const SurfaceReparametrization::Measures before = measures();
     const SurfaceReparametrization::Result   result = model.reparametrize();
-    willmore                                        = geometry.compute_curvature();
+    willmore                                        = geometry.willmore_energy();
     if (!result.done)
       {
         valve.record(result, quality, before, before);

@@ -25,7 +25,7 @@ namespace FluidSurface
     const unsigned int              step     = 0;
     const double                    time     = 0.0;
     const SurfaceGeometry::Measures m        = geometry.measure();
-    const double                    willmore = geometry.compute_curvature();
+    const double                    willmore = geometry.willmore_energy();
     statistics.add_value("time step", step);
     statistics.add_value("time", time);
     statistics.add_value("bending energy", willmore);

@@ -125,7 +125,7 @@ namespace FluidSurface
     tau  = time.step_size();
     bdf2 = time.scheme() == TimeScheme::Kind::bdf2;
     model.parse_parameters(prm, time.maximum_step_size());
-    model.set_time_scheme(time.scheme());
+    model.set_time_scheme(time.scheme(), time.frame());
     if (!from_checkpoint && geometry.equilibrium_shape() == nullptr)
       {
         prm.enter_subsection("geometry");

@@ -74,6 +74,16 @@ namespace FluidSurface
                       "in the lagged convection; the first step and the first after a re-parametrization are "
                       "backward Euler. Needs 'geometry iteration/maximum iterations' ≥ 1, apply = always and time "
                       "level = 1 (a lagged geometry is first order; doc/scheme.md, \"Second order in time\").");
+    prm.declare_entry("frame",
+                      "lab",
+                      Patterns::Selection("lab|Tisserand"),
+                      "The frame the flow steps are solved in. lab: the lab frame (law reference: the frame of the "
+                      "shape's rigid motion, which does not see the spin of a body of revolution). Tisserand: the "
+                      "frame that turns with the fluid's rigid angular velocity Ω = I⁻¹L (I the inertia tensor, L the "
+                      "angular momentum about the centre of mass), carried exactly over the step, with the frame term "
+                      "(Ω × u, v) in the momentum balance and the mesh carried with it: a mode is damped at its "
+                      "co-rotating frequency ν, not at its lab frequency ν + mΩ (doc/scheme.md, \"The co-rotating "
+                      "step\"). With either scheme.");
     prm.declare_entry("energy tolerance",
                       "1e-3",
                       RealRange::at_least(0),
@@ -98,6 +108,7 @@ namespace FluidSurface
     relative_energy_tolerance = prm.get_double("energy tolerance");
     error_tolerance           = prm.get_double("error tolerance");
     scheme_kind = prm.get("scheme") == "BDF2" ? TimeScheme::Kind::bdf2 : TimeScheme::Kind::backward_euler;
+    frame_kind  = prm.get("frame") == "Tisserand" ? TimeScheme::Frame::tisserand : TimeScheme::Frame::lab;
     if (error_tolerance > 0 && !adaptive)
       throw_invalid_entry("time stepping/error tolerance",
                           prm.get("error tolerance"),

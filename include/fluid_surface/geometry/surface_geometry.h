@@ -57,6 +57,19 @@ namespace FluidSurface
       double               mesh_quality = 0;   ///< min over cells of σ_min/σ_max of the cell Jacobian
     };
 
+    /**
+     * The data derived from the position: the weak curvature vector κ = Hν from (κ, η) = −(∇_S X, ∇_S η), the
+     * continuous normal ñ from (ñ, η) = (ν_h, η) (normalized at the nodes), the nodal H = κ·ñ and the Willmore
+     * energy ½∫|κ|². A value: a copy keeps the data of the surface it was taken of.
+     */
+    struct Curvature
+    {
+      VectorType vector;         ///< κ, ghosted
+      VectorType normal;         ///< ñ, ghosted
+      VectorType mean_curvature; ///< H at the nodes, in all three components of each node, ghosted
+      double     willmore_energy = 0; ///< ½∫|κ|²
+    };
+
     /// The largest `refinement`: 6·4⁷ cells for the sphere (memory and time grow 4× per refinement).
     static constexpr unsigned int max_refinement = 7;
     /// The most cells a refined mesh may have (also for a gmsh mesh with more coarse cells).
@@ -81,9 +94,12 @@ namespace FluidSurface
     void
     transform_nodes(const std::function<dealii::Point<3>(const dealii::Point<3> &)> &f);
 
-    /// Replaces the position field (a step's new X, locally owned entries).
+    /// Replaces the position field (a step's new X, locally owned entries); its curvature follows when asked for.
     void
     set_position(const VectorType &new_position);
+    /// Replaces the position field by @p new_position whose curvature is @p new_curvature (a restore: no solve).
+    void
+    set_position(const VectorType &new_position, const Curvature &new_curvature);
 
     const dealii::parallel::distributed::Triangulation<2, 3> &
     triangulation() const
@@ -147,32 +163,36 @@ namespace FluidSurface
     Measures
     measure() const;
 
-    /**
-     * Solves (κ, η) = −(∇_S X, ∇_S η) for the curvature vector κ = Hν and
-     * (ñ, η) = (ν_h, η) for the continuous normal (normalized at the nodes).
-     * Returns the Willmore energy ½∫|κ|².
-     */
-    double
-    compute_curvature();
 
-    /// κ = Hν from the last compute_curvature(), ghosted.
+    /**
+     * The curvature of the current position: computed (collectively) when first asked for after the position
+     * changed, and kept until it changes again.
+     */
+    const Curvature &
+    curvature() const;
+    /// κ = Hν of the current surface, ghosted.
     const VectorType &
     curvature_vector() const
     {
-      return curvature_ghosted;
+      return curvature().vector;
     }
-    /// ñ from the last compute_curvature(), ghosted.
+    /// ñ of the current surface, ghosted.
     const VectorType &
     normal_field() const
     {
-      return normal_ghosted;
+      return curvature().normal;
     }
-
-    /// Nodal mean curvature H = κ·ñ, stored in all three components of each node, ghosted.
+    /// Nodal mean curvature H = κ·ñ of the current surface, in all three components of each node, ghosted.
     const VectorType &
     mean_curvature_nodes() const
     {
-      return mean_curvature_ghosted;
+      return curvature().mean_curvature;
+    }
+    /// The Willmore energy ½∫|κ|² of the current surface.
+    double
+    willmore_energy() const
+    {
+      return curvature().willmore_energy;
     }
 
     /**
@@ -203,17 +223,21 @@ namespace FluidSurface
                               VectorType                             &rhs_curvature,
                               VectorType                             &rhs_normal) const;
 
+    /// Solves for the curvature of the current position.
+    Curvature
+    compute_curvature() const;
+
     /// Normalizes ñ node by node.
     void
-    normalize_normal_field();
+    normalize_normal_field(VectorType &normal) const;
 
-    /// Nodal H = κ·ñ, repeated in the three components of each node.
+    /// Nodal H = κ·ñ of @p curvature, repeated in the three components of each node.
     void
-    update_nodal_mean_curvature();
+    update_nodal_mean_curvature(Curvature &curvature) const;
 
-    /// Willmore energy ½∫|κ|² of the current κ.
+    /// Willmore energy ½∫|κ|² of @p kappa.
     double
-    willmore_energy() const;
+    integrate_willmore_energy(const VectorType &kappa) const;
 
     MPI_Comm communicator;
 
@@ -234,9 +258,9 @@ namespace FluidSurface
     dealii::AffineConstraints<double>                 constraints;
 
     VectorType position_ghosted;
-    VectorType curvature_ghosted;
-    VectorType normal_ghosted;
-    VectorType mean_curvature_ghosted;
+    /// The curvature of position_ghosted, once asked for (curvature()).
+    mutable Curvature derived;
+    mutable bool      derived_current = false;
 
     std::unique_ptr<dealii::MappingFEField<2, 3, VectorType>> surface_mapping;
   };

@@ -37,12 +37,14 @@ namespace FluidSurface
 
     /**
      * Moves the nodes of @p geometry normally so that its area is @p target_area and, if @p hold_volume, its
-     * volume @p target_volume (to 1e-13 relative, at most 8 Newton steps). Uses the nodal ñ and H of the last
-     * compute_curvature(). Returns the largest nodal displacement.
+     * volume @p target_volume (to 1e-13 relative, at most 8 Newton steps), along the modes ñ and Hñ of
+     * @p modes (the curvature of the surface the correction starts from, held fixed over the Newton steps).
+     * Returns the largest nodal displacement.
      */
     double
-    project_area_and_volume(SurfaceGeometry &geometry,
-                            const double     target_area,
+    project_area_and_volume(SurfaceGeometry                  &geometry,
+                            const SurfaceGeometry::Curvature &modes,
+                            const double                      target_area,
                             const double     target_volume,
                             const bool       hold_volume) const;
 

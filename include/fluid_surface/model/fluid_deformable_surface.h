@@ -175,7 +175,7 @@ namespace FluidSurface
      * first order).
      */
     void
-    set_time_scheme(const TimeScheme::Kind kind);
+    set_time_scheme(const TimeScheme::Kind kind, const TimeScheme::Frame frame);
 
     /// The DoFs of (u, p, κ, y, Y).
     const dealii::DoFHandler<2, 3> &

@@ -43,6 +43,16 @@ namespace FluidSurface
      * @p spectral_cutoff (law `reference`) a smooth spectral filter of the Gram matrix that fits the motions
      * with ∫(R·ν)² ≥ 2ε|S| exactly and those below ε|S| not at all. Collective.
      */
+    /**
+     * The Tisserand motion of the velocity (components 0–2 of @p state on @p dofs): the rigid motion
+     * R = P/|S| + Ω × (x − x_c) with Ω = I⁻¹L about the centre of mass x_c and I = ∫(|x − x_c|² 1 − (x − x_c) ⊗
+     * (x − x_c)) the surface's inertia tensor, so that u − R carries neither momentum nor angular momentum. The
+     * spin of a body of revolution counts (unlike fit()), and a rigid velocity is reproduced to round-off.
+     * The momenta are those of fit(). Collective.
+     */
+    static RigidMotion
+    tisserand(const SurfaceGeometry &geometry, const dealii::DoFHandler<2, 3> &dofs, const VectorType &state);
+
     static RigidMotion
     fit(const SurfaceGeometry          &geometry,
         const dealii::DoFHandler<2, 3> &dofs,

@@ -27,7 +27,13 @@ namespace FluidSurface
     const VectorType  &reference_position; ///< S₀ of law reference in the flow numbering
     const RigidMotion &carried;            ///< the rigid motion the mesh follows (none: RigidMotion())
     /// Law reference: the frame velocity R taken on the assembly's surface (BDF2: the new level) instead of X̂.
-    bool   frame_velocity_on_new_surface;
+    bool frame_velocity_on_new_surface;
+    /**
+     * The co-rotating step: the convection is transported by u − R and the mesh moves relative to the frame,
+     * ∇_{u* − R} ũ − (1/τ)(G(Ỹ − X̂), v), instead of ∇_{u*} ũ − (1/τ)(G(Ỹ − X̂ + τR), v): the two differ by
+     * ∇_R(ũ − u*), of order τ mΩ ∂_t u, which a frame that turns at Ω must not carry.
+     */
+    bool relative_transport;
     double area_rate;       ///< s = −(A^m − A₀)/(τ_c A^m) of the continuity row
     double area_scale;      ///< A₀/A of the membrane energy
     double membrane_weight; ///< the weight of the membrane energy (MeshRedistribution::membrane_weight())
@@ -67,8 +73,12 @@ namespace FluidSurface
   class StepAssembly
   {
   public:
-    /// The terms of @p request with the parsed @p components, into @p system.
-    StepAssembly(const StepComponents &components, const StepRequest &request, StepSystem &system);
+    /// The terms of @p request with the parsed @p components, into @p system; @p co_rotating: the step is solved
+    /// in the Tisserand frame (TimeScheme::co_rotating()).
+    StepAssembly(const StepComponents &components,
+                 const StepRequest    &request,
+                 const bool            co_rotating,
+                 StepSystem           &system);
     ~StepAssembly();
 
     /// Assembles matrix, right-hand side and global columns on the geometry's current surface.

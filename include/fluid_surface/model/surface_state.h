@@ -6,6 +6,7 @@
 #include <fluid_surface/geometry/surface_geometry.h>
 
 #include <array>
+#include <optional>
 
 namespace FluidSurface
 {
@@ -39,6 +40,8 @@ namespace FluidSurface
 
     VectorType solution; ///< u^m, p, κ, y and Y = X^m of the accepted state (flow numbering), ghosted
     VectorType position; ///< X^m (geometry numbering), ghosted
+    /// The curvature of X^m once the state was accepted (a restore is then an assignment); none after a load.
+    std::optional<SurfaceGeometry::Curvature> curvature;
     /// X₀, the reference surface S₀ of the mesh law (the initial position unless replaced), geometry
     /// numbering, ghosted.
     VectorType reference_surface;

@@ -150,7 +150,7 @@ namespace FluidSurface
     }
     /// The time scheme of the flow steps (`time stepping/scheme`; its history is kept in checkpoints).
     void
-    set_time_scheme(const TimeScheme::Kind kind);
+    set_time_scheme(const TimeScheme::Kind kind, const TimeScheme::Frame frame);
     /// Whether the next flow step iterates its geometry.
     bool
     iterating_geometry() const

@@ -41,9 +41,26 @@ namespace FluidSurface
       backward_euler,
       bdf2
     };
-    /// The scheme @p kind.
+    /// The frames of `time stepping/frame`.
+    enum class Frame
+    {
+      lab,      ///< the step is solved in the lab frame (law reference: in the frame of the shape's rigid motion)
+      tisserand ///< in the frame that turns with the fluid's rigid motion Ω = I⁻¹L (CoRotatingFrame)
+    };
+    /// The scheme @p kind in the frame @p frame.
     static std::unique_ptr<TimeScheme>
-    create(const Kind kind);
+    create(const Kind kind, const Frame frame = Frame::lab);
+
+    /**
+     * Whether the flow steps are solved in the Tisserand frame of u^m (RigidMotion::tisserand()): the frame
+     * turns with the fluid's rigid motion over the step (exactly, by Rodrigues' formula), the momentum balance
+     * gains the frame term (Ω × ũ, v), and the mesh is carried with the frame.
+     */
+    virtual bool
+    co_rotating() const
+    {
+      return false;
+    }
 
     virtual ~TimeScheme() = default;
     /**
@@ -86,6 +103,60 @@ namespace FluidSurface
           const RigidMotion &carried,
           const bool         carried_frame,
           const double       tau) override;
+  };
+
+  /**
+   * A scheme solved in the Tisserand frame of the fluid (co_rotating()): a mode that turns with the fluid at
+   * the co-rotating frequency ν is seen by the step at ν, not at its lab frequency ν + mΩ, so the step's
+   * damping of it does not grow with Ωτ (doc/scheme.md, "The co-rotating step"). The start and the history
+   * are those of the scheme it wraps (BackwardEuler, VariableBDF2), whose previous state is carried into the
+   * frame of the step.
+   */
+  class CoRotatingFrame : public TimeScheme
+  {
+  public:
+    /// The scheme @p scheme in the Tisserand frame.
+    explicit CoRotatingFrame(std::unique_ptr<TimeScheme> scheme)
+      : scheme(std::move(scheme))
+    {}
+    bool
+    co_rotating() const override
+    {
+      return true;
+    }
+    StepStart
+    start(const VectorType  &old_position,
+          const VectorType  &old_fields,
+          const StepSystem  &system,
+          const RigidMotion &carried,
+          const bool         carried_frame,
+          const double       tau) override
+    {
+      return scheme->start(old_position, old_fields, system, carried, carried_frame, tau);
+    }
+    void
+    accept(const VectorType &old_fields, const StepSystem &system, const double tau) override
+    {
+      scheme->accept(old_fields, system, tau);
+    }
+    void
+    forget_history() override
+    {
+      scheme->forget_history();
+    }
+    void
+    save(CheckpointData &data, const StepSystem &system) const override
+    {
+      scheme->save(data, system);
+    }
+    void
+    load(const CheckpointData &data, const StepSystem &system) override
+    {
+      scheme->load(data, system);
+    }
+
+  private:
+    std::unique_ptr<TimeScheme> scheme;
   };
 
   /**

@@ -98,6 +98,12 @@ namespace FluidSurface
     {
       return scheme_kind;
     }
+    /// The frame of the flow steps (`frame`).
+    TimeScheme::Frame
+    frame() const
+    {
+      return frame_kind;
+    }
     /// ε_t of `error tolerance`.
     double
     error_bound() const
@@ -173,7 +179,8 @@ namespace FluidSurface
     unsigned int easy_steps;
     double       relative_energy_tolerance;
     double       error_tolerance = 0; ///< ε_t; 0: no error control
-    TimeScheme::Kind scheme_kind = TimeScheme::Kind::backward_euler; ///< `scheme`
+    TimeScheme::Kind  scheme_kind = TimeScheme::Kind::backward_euler; ///< `scheme`
+    TimeScheme::Frame frame_kind  = TimeScheme::Frame::lab;           ///< `frame`
     bool         adaptive;
 
     double       current_time = 0;

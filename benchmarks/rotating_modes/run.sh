@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# benchmarks/rotating_modes (issue 33): the growth rate of a seeded azimuthal mode of a rotating equilibrium, measured
+# in full nonlinear runs at a fixed τ, for the old step (the lab frame) and the co-rotating step
+# (`time stepping/frame = Tisserand`), backward Euler and BDF2, against the linearized rate σ of scene stability and
+# the one-mode prediction ln|z(λτ)|/τ (predict.py) with λ = σ + iν_seen, ν_seen = ν + mΩ (lab) or ν (co-rotating).
+#   benchmarks/rotating_modes/run.sh [--quick]        from the repository root, after building
+#     --quick: the oblate's m = 2 even at refinement 2, τ = 0.1 and 0.05 (8 runs, minutes)
+# Environment: WORK (default benchmarks/rotating_modes/work, not committed), EXE, JOBS (runs at once, default 1),
+# REFINEMENT (default 3), TAUS (default "0.1 0.05 0.025"), CASES (default: the three modes below).
+set -u
+cd "$(dirname "$0")/../.."
+here=benchmarks/rotating_modes
+exe=${EXE:-$PWD/build/fluid_surface}
+work=${WORK:-$PWD/$here/work}
+refinement=${REFINEMENT:-3}; taus=${TAUS:-"0.1 0.05 0.025"}
+cases=${CASES:-"oblate:2:even prolate:1:even prolate:2:even"}
+end=3
+if [ "${1:-}" = "--quick" ]; then refinement=2; taus="0.1 0.05"; cases="oblate:2:even"; end=2.5; shift; fi
+mkdir -p "$work"
+queue=""
+for c in $cases; do
+  IFS=: read -r shape m parity <<< "$c"
+  for scheme in "backward Euler" BDF2; do for frame in lab Tisserand; do for tau in $taus; do
+    s=$([ "$scheme" = BDF2 ] && echo bdf2 || echo be)
+    name=${shape}_m${m}_${parity}_r${refinement}_${s}_${frame}_tau${tau}
+    {
+      echo "include $PWD/prm/seeded_mode_$shape.prm"
+      echo "subsection geometry"; echo "  set refinement = $refinement"; echo "end"
+      echo "subsection initial state"; echo "  set azimuthal wavenumber = $m"; echo "  set azimuthal parity = $parity"; echo "end"
+      echo "subsection time stepping"; echo "  set end time = $end"; echo "  set time step = $tau"
+      echo "  set maximum time step = $tau"; echo "  set scheme = $scheme"; echo "  set frame = $frame"; echo "end"
+      echo "subsection output"; echo "  set output directory = $work/$name"; echo "  set overwrite = true"
+      echo "  set write vtu = false"; echo "  set screen interval = 100000"; echo "end"
+    } > "$work/$name.prm"
+    queue="$queue $name"
+  done; done; done
+done
+run_one() {
+  start=$(date +%s.%N)
+  "$exe" "$work/$1.prm" > "$work/$1.log" 2>&1
+  status=$?
+  echo "$1 $status $(echo "$(date +%s.%N) - $start" | bc)" > "$work/$1.exit"
+  echo "$1 exit $status"
+}
+export -f run_one; export exe work
+echo $queue | tr ' ' '\n' | xargs -P "${JOBS:-1}" -I{} bash -c 'run_one {}'
+/usr/bin/python3 $here/table.py "$work" $queue > "$here/results${1:+_$1}.csv.tmp" && \
+  mv "$here/results${1:+_$1}.csv.tmp" "$here/results$([ $refinement = 2 ] && echo _quick).csv"
+cat "$here/results$([ $refinement = 2 ] && echo _quick).csv"
