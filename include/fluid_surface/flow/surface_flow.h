@@ -63,7 +63,12 @@ namespace FluidSurface
    * (λ, v·n) + (u·n, μ) (direct solver only). Convection is the skew-symmetric form
    * c(w; u, v) = ½[(∇_w u, v) − (∇_w v, u)] of SurfaceFluid::convection_term with w extrapolated
    * from the old steps (energy neutral on the fixed surface: c(w; u, u) = 0). Time derivative: BDF1 or BDF2.
-   * The mass and convection terms are assembled only when switched on.
+   * The mass and convection terms are assembled only when switched on. Which rows it shares with scene full,
+   * and why convection and BDF differ: doc/architecture.md, "The fixed-surface scene and the model's flow terms".
+   *
+   * Translation units: surface_flow.cc (parameters, DoFs, constraints, matrices, initial state),
+   * surface_flow_assembly.cc (cell terms, velocity AMG matrices, global system), surface_flow_solvers.cc,
+   * surface_flow_diagnostics.cc (energies, error norms).
    */
   class SurfaceFlow
   {
@@ -160,6 +165,7 @@ namespace FluidSurface
     /// Declares `subsection fixed surface solver` (Parameters::declare).
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+    /// The parameters given to the constructor.
     const Parameters &
     get_parameters() const
     {
@@ -213,6 +219,7 @@ namespace FluidSurface
     Errors
     compute_errors(const FlowField &exact, const double time) const;
 
+    /// The DoFs of (u, p[, λ]), velocity block first.
     const dealii::DoFHandler<2, 3> &
     dof_handler() const
     {
@@ -224,16 +231,19 @@ namespace FluidSurface
     {
       return current;
     }
+    /// Number of velocity DoFs (the first block).
     dealii::types::global_dof_index
     n_velocity_dofs() const
     {
       return n_u;
     }
+    /// Number of pressure DoFs (the second block).
     dealii::types::global_dof_index
     n_pressure_dofs() const
     {
       return n_p;
     }
+    /// Re.
     double
     reynolds_number() const
     {
@@ -270,6 +280,11 @@ namespace FluidSurface
     std::array<double, 3>
     bdf_coefficients() const;
 
+    /**
+     * The system at @p time with step @p tau: the right-hand side, the matrix if @p assemble_matrix (and the
+     * preconditioner matrices if they are outdated); stationary runs with Killing fields then remove the
+     * Killing components of the right-hand side.
+     */
     void
     assemble(const double time, const double tau, const bool assemble_matrix);
     /// One cell of assemble(): the flow terms (SurfaceFluid), the body force, the penalty or multiplier.
@@ -332,6 +347,7 @@ namespace FluidSurface
                        const NodeFrames                &frames,
                        const dealii::FullMatrix<double> &A,
                        dealii::FullMatrix<double>       &A_R) const;
+    /// Adds one cell's matrices and vectors to the global ones, with the constraints.
     void
     copy_local_to_global(const CopyData &copy);
     /// Quadrature of the low-order-refined operator: 2×2 Gauss points on each of the 4 sub-cells.
@@ -348,6 +364,11 @@ namespace FluidSurface
     /// The owned velocity nodes with their positions, normals ñ/|ñ| and frames, for the velocity AMG.
     std::vector<BlockStokesPreconditioner::VelocityNode>
     velocity_nodes() const;
+    /**
+     * Solves the assembled system into the current solution: the kept factorization (or AMG hierarchies) is
+     * rebuilt when τ or α₀ changed (@p coefficients_changed); @p matrix_changed tells the direct solver that
+     * the matrix is new.
+     */
     SolveInfo
     solve(const bool matrix_changed, const bool coefficients_changed);
     /// GMRES with the block preconditioner, whose AMG hierarchies are built if they are not.
