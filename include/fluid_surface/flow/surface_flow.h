@@ -8,6 +8,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
@@ -62,7 +63,12 @@ namespace FluidSurface
    * (λ, v·n) + (u·n, μ) (direct solver only). Convection is the skew-symmetric form
    * c(w; u, v) = ½[(∇_w u, v) − (∇_w v, u)] of SurfaceFluid::convection_term with w extrapolated
    * from the old steps (energy neutral on the fixed surface: c(w; u, u) = 0). Time derivative: BDF1 or BDF2.
-   * The mass and convection terms are assembled only when switched on.
+   * The mass and convection terms are assembled only when switched on. Which rows it shares with scene full,
+   * and why convection and BDF differ: doc/architecture.md, "The fixed-surface scene and the model's flow terms".
+   *
+   * Translation units: surface_flow.cc (parameters, DoFs, constraints, matrices, initial state),
+   * surface_flow_assembly.cc (cell terms, velocity AMG matrices, global system), surface_flow_solvers.cc,
+   * surface_flow_diagnostics.cc (energies, error norms).
    */
   class SurfaceFlow
   {
@@ -159,6 +165,7 @@ namespace FluidSurface
     /// Declares `subsection fixed surface solver` (Parameters::declare).
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+    /// The parameters given to the constructor.
     const Parameters &
     get_parameters() const
     {
@@ -212,6 +219,7 @@ namespace FluidSurface
     Errors
     compute_errors(const FlowField &exact, const double time) const;
 
+    /// The DoFs of (u, p[, λ]), velocity block first.
     const dealii::DoFHandler<2, 3> &
     dof_handler() const
     {
@@ -223,16 +231,19 @@ namespace FluidSurface
     {
       return current;
     }
+    /// Number of velocity DoFs (the first block).
     dealii::types::global_dof_index
     n_velocity_dofs() const
     {
       return n_u;
     }
+    /// Number of pressure DoFs (the second block).
     dealii::types::global_dof_index
     n_pressure_dofs() const
     {
       return n_p;
     }
+    /// Re.
     double
     reynolds_number() const
     {
@@ -245,7 +256,35 @@ namespace FluidSurface
   private:
     struct ScratchData;
     struct CopyData;
+    /// The rotations R_k = [t₁ t₂ n] of the 9 velocity nodes of a cell (the identity where Cartesian).
+    using NodeFrames = std::array<dealii::Tensor<2, 3>, 9>;
 
+    /// Tables of the low-order-refined operator: the 12 velocity DoFs and the quadrature points of each of the
+    /// 4 sub-cells, and the node (0–8) of each local velocity DoF.
+    void
+    index_lor_subcells();
+    /// The sparsity patterns and matrices of the system (and of the block preconditioner).
+    void
+    reinit_matrices();
+    /// The constraints fixing the Killing fields at one node per axis (direct solver).
+    void
+    pin_killing_fields();
+    /// The cell of the geometry's DoFHandler (position X, normal ñ) that is @p cell of the flow's.
+    typename dealii::DoFHandler<2, 3>::active_cell_iterator
+    geometry_cell(const typename dealii::DoFHandler<2, 3>::active_cell_iterator &cell) const;
+    /// I_h of @p field at @p time on the curved surface (the multiplier λ, if any, is 0).
+    VectorType
+    interpolate(const FlowField &field, const double time) const;
+    /// α₀ and the history coefficients β₁, β₂ of (α₀u^{m+1} − β₁u^m − β₂u^{m−1})/τ of the next step (the
+    /// first BDF2 step is a BDF1 step).
+    std::array<double, 3>
+    bdf_coefficients() const;
+
+    /**
+     * The system at @p time with step @p tau: the right-hand side, the matrix if @p assemble_matrix (and the
+     * preconditioner matrices if they are outdated); stationary runs with Killing fields then remove the
+     * Killing components of the right-hand side.
+     */
     void
     assemble(const double time, const double tau, const bool assemble_matrix);
     /// One cell of assemble(): the flow terms (SurfaceFluid), the body force, the penalty or multiplier.
@@ -253,6 +292,29 @@ namespace FluidSurface
     local_assemble(const typename dealii::DoFHandler<2, 3>::active_cell_iterator &cell,
                    ScratchData                                                   &scratch,
                    CopyData                                                      &copy) const;
+    /// Reinitializes the cell's values and clears @p copy: shape functions, ñ (continuous penalty normal) and
+    /// the old velocities (time derivative).
+    void
+    reinit_cell(const typename dealii::DoFHandler<2, 3>::active_cell_iterator &cell,
+                ScratchData                                                   &scratch,
+                CopyData                                                      &copy) const;
+    /// The normal n of the tangentiality penalty (or multiplier) at quadrature point @p q of the cell.
+    dealii::Tensor<1, 3>
+    penalty_normal_at(const ScratchData &scratch, const unsigned int q) const;
+    /// The BDF history β₁u^m + β₂u^{m−1} and the extrapolated convection velocity at quadrature point @p q.
+    void
+    set_old_velocities(ScratchData &scratch, const unsigned int q, const std::array<double, 3> &bdf) const;
+    /**
+     * Adds the integrands at quadrature point @p q (scratch.point) to the cell's matrix and right-hand side,
+     * and to the preconditioner matrices if @p build_preconditioner.
+     */
+    void
+    add_point_terms(ScratchData                 &scratch,
+                    CopyData                    &copy,
+                    const unsigned int           q,
+                    const double                 penalty,
+                    const std::array<double, 3> &bdf,
+                    const bool                   build_preconditioner) const;
     /**
      * The cell's matrices of the velocity AMG (block preconditioner): its velocity block rotated into node
      * frames [t₁ t₂ n], or the low-order-refined operator on the 4 sub-cells with the penalty @p penalty.
@@ -262,6 +324,30 @@ namespace FluidSurface
                           ScratchData                                                   &scratch,
                           CopyData                                                      &copy,
                           const double                                                   penalty) const;
+    /// The node frames of the cell's 9 velocity nodes (Cartesian at constrained nodes).
+    NodeFrames
+    node_frames(const typename dealii::DoFHandler<2, 3>::active_cell_iterator &cell,
+                ScratchData                                                   &scratch,
+                const CopyData                                                &copy) const;
+    /**
+     * The low-order-refined velocity block (2/Re)(σ(u), σ(v)) + η(u·n, v·n) [+ (α₀/τ)(u, v)] with the penalty
+     * @p penalty of this cell, for the piecewise bilinear functions on its 4 sub-cells, in the node frames
+     * @p frames.
+     */
+    void
+    assemble_lor_matrices(const typename dealii::DoFHandler<2, 3>::active_cell_iterator &cell,
+                          ScratchData                                                   &scratch,
+                          CopyData                                                      &copy,
+                          const double                                                   penalty,
+                          const NodeFrames                                              &frames) const;
+    /// A_R = QᵀAQ of the local matrix @p A on the cell DoFs @p dofs, Q the node frames @p frames (the
+    /// identity on pressure DoFs).
+    void
+    rotate_into_frames(const std::vector<unsigned int> &dofs,
+                       const NodeFrames                &frames,
+                       const dealii::FullMatrix<double> &A,
+                       dealii::FullMatrix<double>       &A_R) const;
+    /// Adds one cell's matrices and vectors to the global ones, with the constraints.
     void
     copy_local_to_global(const CopyData &copy);
     /// Quadrature of the low-order-refined operator: 2×2 Gauss points on each of the 4 sub-cells.
@@ -271,14 +357,18 @@ namespace FluidSurface
     /// identity at a @p cartesian (constrained) node and on meshes with hanging nodes.
     dealii::Tensor<2, 3>
     lor_frame(const dealii::Point<3> &x, const dealii::Tensor<1, 3> &smooth_normal, const bool cartesian) const;
+    /// The stationary right-hand side made orthogonal to the Killing fields (k_aᵀF = 0).
+    void
+    remove_killing_components_from_rhs();
+
     /// The owned velocity nodes with their positions, normals ñ/|ñ| and frames, for the velocity AMG.
     std::vector<BlockStokesPreconditioner::VelocityNode>
     velocity_nodes() const;
-    void
-    remove_killing_components_from_rhs();
-    /// The constraints fixing the Killing fields at one node per axis (direct solver).
-    void
-    pin_killing_fields();
+    /**
+     * Solves the assembled system into the current solution: the kept factorization (or AMG hierarchies) is
+     * rebuilt when τ or α₀ changed (@p coefficients_changed); @p matrix_changed tells the direct solver that
+     * the matrix is new.
+     */
     SolveInfo
     solve(const bool matrix_changed, const bool coefficients_changed);
     /// GMRES with the block preconditioner, whose AMG hierarchies are built if they are not.

@@ -35,6 +35,9 @@ namespace FluidSurface
    * The system is discretized by Chebyshev collocation in s/S (spectral accuracy) and solved by damped
    * Newton, starting from a spheroid of the same A and V, with continuation in the reduced volume when
    * needed and continuation in ω² (or L) from the resting shape.
+   *
+   * The collocated equations and Newton: GeneratingCurveCollocation; the start shapes and continuations:
+   * EquilibriumContinuation; the interpolant of the curve and its CSV: axisymmetric_equilibrium_curve.cc.
    */
   class AxisymmetricEquilibrium
   {
