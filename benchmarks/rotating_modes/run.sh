@@ -6,7 +6,8 @@
 #   benchmarks/rotating_modes/run.sh [--quick]        from the repository root, after building
 #     --quick: the oblate's m = 2 even at refinement 2, τ = 0.1 and 0.05 (8 runs, minutes)
 # Environment: WORK (default benchmarks/rotating_modes/work, not committed), EXE, JOBS (runs at once, default 1),
-# REFINEMENT (default 3), TAUS (default "0.1 0.05 0.025"), CASES (default: the three modes below).
+# REFINEMENT (default 3), TAUS (default "0.1 0.05 0.025"), CASES (default: the three modes below), SCHEMES
+# (default "be bdf2"), FRAMES (default "lab Tisserand").
 set -u
 cd "$(dirname "$0")/../.."
 here=benchmarks/rotating_modes
@@ -20,8 +21,8 @@ mkdir -p "$work"
 queue=""
 for c in $cases; do
   IFS=: read -r shape m parity <<< "$c"
-  for scheme in "backward Euler" BDF2; do for frame in lab Tisserand; do for tau in $taus; do
-    s=$([ "$scheme" = BDF2 ] && echo bdf2 || echo be)
+  for s in ${SCHEMES:-be bdf2}; do for frame in ${FRAMES:-lab Tisserand}; do for tau in $taus; do
+    scheme=$([ "$s" = bdf2 ] && echo BDF2 || echo "backward Euler")
     name=${shape}_m${m}_${parity}_r${refinement}_${s}_${frame}_tau${tau}
     {
       echo "include $PWD/prm/seeded_mode_$shape.prm"
