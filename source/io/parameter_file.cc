@@ -287,16 +287,6 @@ namespace FluidSurface
     return v;
   }
 
-  dealii::Tensor<1, 3>
-  unit_vector(const dealii::Tensor<1, 3> &v)
-  {
-    const double largest = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
-    if (largest == 0)
-      return v;
-    const dealii::Tensor<1, 3> w = v / largest;
-    return w / w.norm();
-  }
-
   const std::string &
   parameter_file_name()
   {

@@ -1,6 +1,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <fluid_surface/base/vector_math.h>
 #include <fluid_surface/io/checkpoint.h>
 #include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/model/fluid_deformable_surface.h>

@@ -2,6 +2,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <fluid_surface/base/vector_math.h>
 #include <fluid_surface/flow/energy_functionals.h>
 #include <fluid_surface/geometry/azimuthal_harmonic.h>
 #include <fluid_surface/io/checkpoint.h>

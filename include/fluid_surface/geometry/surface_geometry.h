@@ -12,6 +12,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fluid_surface/base/types.h>
 #include <fluid_surface/reference/axisymmetric_equilibrium.h>
 
 #include <functional>
@@ -21,8 +22,6 @@
 namespace FluidSurface
 {
   /// The vector type of every distributed field (position, velocity, curvature).
-  using VectorType = dealii::TrilinosWrappers::MPI::Vector;
-
   /**
    * The moving closed surface S: a parallel::distributed::Triangulation<2,3>
    * of quadrilaterals, the position field X ∈ [Q_k]³ and the MappingFEField

@@ -91,12 +91,6 @@ namespace FluidSurface
   get_vector(const dealii::ParameterHandler &prm, const std::string &name);
 
   /**
-   * @p v / |v|, computed without overflow or underflow of |v| for any finite @p v; zero for v = 0.
-   */
-  dealii::Tensor<1, 3>
-  unit_vector(const dealii::Tensor<1, 3> &v);
-
-  /**
    * Reads @p filename into @p prm. Every failure of deal.II's parser (missing
    * file, unknown subsection or entry, a value that fails its pattern) becomes
    * an InputError whose message names the file, the line and what was expected; a value that fails its
