@@ -85,7 +85,6 @@ namespace FluidSurface
   void
   FluidDeformableSurface::parse_parameters(ParameterHandler &prm, const double maximum_time_step)
   {
-    reject_entries_unused_by_scene({"fixed surface/*", "fixed surface solver/*"}, "full");
     step.parse_parameters(prm, maximum_time_step);
     reparametrization.parse_parameters(prm, step.redistribution.mesh_quality_floor);
     run_request = StepRequest::flow_step(step.redistribution.law);

@@ -357,7 +357,7 @@ namespace FluidSurface
       }
     catch (const std::exception &exc)
       {
-        throw InputError(parameter_file_name() + ": diagnostics/reference equilibrium = " + reference_equilibrium +
+        throw EntryError("diagnostics/reference equilibrium = " + reference_equilibrium +
                          ": no rotating equilibrium with the run's area " + std::to_string(p.area) +
                          ", reduced volume " + std::to_string(p.reduced_volume) + " and angular momentum " +
                          std::to_string(p.angular_momentum) + " (" + exc.what() +

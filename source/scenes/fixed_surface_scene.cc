@@ -263,32 +263,34 @@ namespace FluidSurface
     // solver` SurfaceFlow's; the Simulation declares each once.
   }
 
+  ParametersRead
+  FixedSurfaceScene::parameters_read() const
+  {
+    return {"scene fixed surface",
+            {"model",
+             "geometry",
+             "output",
+             "flow",
+             "fixed surface",
+             "fixed surface solver",
+             "linear solver",
+             "time stepping"},
+            {"flow/conserve momenta",
+             "flow/rigid motion regularization",
+             "time stepping/adaptive",
+             "time stepping/minimum time step",
+             "time stepping/maximum time step",
+             "time stepping/growth factor",
+             "time stepping/shrink factor",
+             "time stepping/easy steps before growth",
+             "time stepping/energy tolerance",
+             "time stepping/error tolerance",
+             "time stepping/scheme"}};
+  }
+
   void
   FixedSurfaceScene::parse_parameters(ParameterHandler &prm)
   {
-    reject_entries_unused_by_scene({"flow/conserve momenta",
-                                    "flow/rigid motion regularization",
-                                    "bending/*",
-                                    "volume constraint/*",
-                                    "mesh redistribution/*",
-                                    "conservation projection/*",
-                                    "initial state/*",
-                                    "equilibrium/*",
-                                    "diagnostics/*",
-                                    "checkpoint/*",
-                                    "steady state/*",
-                                    "reparametrization/*",
-                                    "time stepping/adaptive",
-                                    "time stepping/minimum time step",
-                                    "time stepping/maximum time step",
-                                    "time stepping/growth factor",
-                                    "time stepping/shrink factor",
-                                    "time stepping/easy steps before growth",
-                                    "time stepping/energy tolerance",
-                                    "time stepping/error tolerance",
-                                    "time stepping/scheme",
-                                    "geometry iteration/*"},
-                                   "fixed surface");
     prm.enter_subsection("fixed surface");
     const std::string name = prm.get("problem");
     problem     = name == "manufactured sphere"    ? Problem::manufactured_sphere :

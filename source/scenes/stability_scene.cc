@@ -108,6 +108,33 @@ namespace FluidSurface
     prm.leave_subsection();
   }
 
+  ParametersRead
+  StabilityScene::parameters_read() const
+  {
+    return {"scene stability",
+            {"model",
+             "geometry",
+             "equilibrium",
+             "output",
+             "initial state",
+             "flow",
+             "bending",
+             "volume constraint",
+             "mesh redistribution",
+             "conservation projection",
+             "geometry iteration",
+             "linear solver",
+             "time stepping",
+             "stability"},
+            {"time stepping/end time",
+             "time stepping/adaptive",
+             "time stepping/minimum time step",
+             "time stepping/growth factor",
+             "time stepping/shrink factor",
+             "time stepping/easy steps before growth",
+             "time stepping/energy tolerance"}};
+  }
+
   void
   StabilityScene::parse_parameters(ParameterHandler &prm)
   {
@@ -544,8 +571,7 @@ namespace FluidSurface
     if (!(drift <= equilibrium_tolerance))
       {
         std::ostringstream msg;
-        msg << (parameter_file_name().empty() ? std::string("parameters") : parameter_file_name())
-            << ": the start is not an equilibrium of the discrete model: its surface moves beyond a rigid rotation at "
+        msg << "the start is not an equilibrium of the discrete model: its surface moves beyond a rigid rotation at "
             << std::setprecision(3) << drift << " R per unit time, above 'stability/equilibrium tolerance' = "
             << equilibrium_tolerance;
         if (from_checkpoint)
@@ -556,7 +582,7 @@ namespace FluidSurface
         else
           msg << "; expected an equilibrium (geometry/shape = equilibrium with its ω, a finer "
               << "'geometry/refinement' or 'equilibrium/*' settings that converge).";
-        throw InputError(msg.str());
+        throw EntryError(msg.str());
       }
 
     spectrum_file = output.directory() + "spectrum.csv";

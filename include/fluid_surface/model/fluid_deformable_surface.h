@@ -40,7 +40,6 @@ namespace FluidSurface
     declare_parameters(dealii::ParameterHandler &prm);
     /**
      * Reads them; τ_max = @p maximum_time_step of the run bounds the drift-correction time from below.
-     * Rejects (InputError) entries that scene full does not use.
      */
     void
     parse_parameters(dealii::ParameterHandler &prm, const double maximum_time_step);
