@@ -318,11 +318,10 @@ namespace FluidSurface
     fluid.parse_parameters(prm);
     flow_parameters.parse(prm, fluid);
 
-    prm.enter_subsection("geometry");
-    const std::string shape = prm.get("shape");
-    sphere_radius           = prm.get_double("radius");
-    semi_axes               = get_vector(prm, "semi-axes");
-    prm.leave_subsection();
+    const SurfaceGeometry::Parameters &shape_entries = geometry.parameters();
+    const std::string                  shape         = SurfaceGeometry::shape_name(shape_entries.shape);
+    sphere_radius                                    = shape_entries.radius;
+    semi_axes                                        = shape_entries.semi_axes;
     const bool needs_sphere = problem != Problem::manufactured_ellipsoid;
     if (needs_sphere && shape != "sphere")
       throw_invalid_entry("geometry/shape", shape, "sphere (fixed surface/problem = " + name + ")");

@@ -154,25 +154,20 @@ namespace FluidSurface
     model.parse_parameters(prm, time.maximum_step_size());
     model.set_bdf2(time.bdf2());
     if (!from_checkpoint && geometry.equilibrium_shape() == nullptr)
-      {
-        prm.enter_subsection("geometry");
-        const std::string shape = prm.get("shape");
-        prm.leave_subsection();
-        throw_invalid_entry("geometry/shape",
-                            shape,
-                            "equilibrium with scene stability (the rotating state whose spectrum is computed)");
-      }
-    prm.enter_subsection("initial state");
-    if (!from_checkpoint && !prm.get_bool("equilibrium rotation"))
+      throw_invalid_entry("geometry/shape",
+                          SurfaceGeometry::shape_name(geometry.parameters().shape),
+                          "equilibrium with scene stability (the rotating state whose spectrum is computed)");
+    const FluidDeformableSurface::InitialState &initial = model.initial_state();
+    if (!from_checkpoint && !initial.equilibrium_rotation)
       throw_invalid_entry("initial state/equilibrium rotation",
                           "false",
                           "true with scene stability (the equilibrium rotates rigidly with its ω)");
-    for (const std::string entry : {"shape perturbation", "velocity perturbation"})
-      if (!from_checkpoint && prm.get_double(entry) != 0)
-        throw_invalid_entry("initial state/" + entry,
-                            prm.get(entry),
+    for (const auto &[entry, value] : {std::make_pair("shape perturbation", initial.shape_perturbation),
+                                       std::make_pair("velocity perturbation", initial.velocity_perturbation)})
+      if (!from_checkpoint && value != 0)
+        throw_invalid_entry(std::string("initial state/") + entry,
+                            Utilities::to_string(value),
                             "0 with scene stability (it perturbs the equilibrium itself, one mode at a time)");
-    prm.leave_subsection();
 
     prm.enter_subsection("stability");
     wavenumbers.clear();

@@ -69,7 +69,8 @@ namespace FluidSurface
     /// `linear solver` and of `time stepping` the end time and the time step.
     ParametersRead
     parameters_read() const override;
-    /// Reads them; checks that the problem matches the shape of `subsection geometry`.
+    /// Reads them; checks that the problem matches the shape of `subsection geometry` (SurfaceGeometry::parameters(),
+    /// which the geometry has parsed first).
     void
     parse_parameters(dealii::ParameterHandler &prm) override;
 
