@@ -3,7 +3,9 @@
 
 1. Every relative link and image in README.md, CHANGELOG.md, doc/*.md and benchmarks/*/README.md points to an
    existing file or directory; a link to a heading of a Markdown file (file.md#heading) names an existing heading.
-2. Every prm file named in README.md passes `fluid_surface --validate FILE`, run from the repository root.
+2. Every prm file named in README.md passes `fluid_surface --validate FILE`, run from the repository root; the
+   listing doc/parameters.prm, which sets every entry of every scene, may fail only by the scene rule (no scene
+   reads every subsection), so each of its entries is declared and its default passes its pattern.
 
 Usage: documentation_links.py SOURCE_DIR [FLUID_SURFACE_EXECUTABLE]
 Without the executable only part 1 runs. Prints one line per problem and exits with status 1 if there is any.
@@ -20,6 +22,7 @@ LINK = re.compile(r"!?\[(?:[^\]\\]|\\.)*\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\
 HTML_SOURCE = re.compile(r"<(?:img|a)\s[^>]*(?:src|href)=\"([^\"]+)\"", re.IGNORECASE)
 INLINE_CODE = re.compile(r"`[^`]*`")
 HEADING = re.compile(r"^(#{1,6})\s+(.*?)\s*#*\s*$")
+LISTING = "doc/parameters.prm"
 PRM = re.compile(r"(?<![\w./-])((?:prm|tests|benchmarks|doc)/[\w./-]*\.prm)(?![\w.-])")
 
 
@@ -94,7 +97,8 @@ def check_prm_files(root, executable):
             continue
         run = subprocess.run([executable, "--validate", prm], cwd=root, stdout=subprocess.PIPE,
                              stderr=subprocess.STDOUT, universal_newlines=True)
-        if run.returncode != 0:
+        refused_by_scene_rule = run.returncode == 2 and "is set, but scene" in run.stdout
+        if run.returncode != 0 and not (prm == LISTING and refused_by_scene_rule):
             problems.append("README.md names '%s': --validate failed (exit %d): %s"
                             % (prm, run.returncode, run.stdout.strip()))
     return problems, named

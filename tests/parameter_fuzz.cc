@@ -147,6 +147,16 @@ namespace
       base = "subsection model\n  set scene = fixed surface\nend\nsubsection geometry\n  set shape = sphere\n"
              "  set refinement = 1\nend\nsubsection fixed surface\n  set problem = decaying mode\nend\n"
              "subsection time stepping\n  set end time = 0.04\n  set time step = 0.02\nend\n";
+    else if (section == "stability")
+      // Scene stability reads it: the oblate equilibrium at rest in its frame, at most as many eigenvalues
+      // reported as the Krylov dimension the entry tried allows.
+      base = "subsection model\n  set scene = stability\nend\nsubsection geometry\n  set refinement = 1\n"
+             "  set shape = equilibrium\nend\nsubsection equilibrium\n  set branch = oblate\nend\n"
+             "subsection initial state\n  set equilibrium rotation = true\nend\n"
+             "subsection time stepping\n  set time step = 0.01\nend\nsubsection stability\n" +
+             std::string(path == "stability/eigenvalues per wavenumber" ? "  set maximum Krylov dimension = 60\n" :
+                                                                          "  set eigenvalues per wavenumber = 1\n") +
+             "end\n";
     else
       base = "subsection model\n  set scene = full\nend\nsubsection geometry\n  set refinement = 1\n" +
              std::string(section == "equilibrium" ?

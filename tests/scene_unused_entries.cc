@@ -1,8 +1,8 @@
-// A scene rejects an entry that the parameter file sets but the scene would not use, before any
-// computation (an InputError: exit status 2 of fluid_surface), with a message naming the file, the line and
-// the entry: scene full with an entry of `fixed surface solver`, scene fixed surface with entries of the
-// deformable surface (bending, flow/conserve momenta, time stepping/maximum time step). The same entries in
-// the scene that uses them are accepted.
+// A scene rejects an entry that the parameter file sets outside the subsections it reads, or that it ignores,
+// before any computation (an InputError: exit status 2 of fluid_surface), with a message naming the file, the
+// line, the entry and the scene: scene full with an entry of `fixed surface solver` or `fixed surface`, scene
+// fixed surface with entries of the deformable surface (bending, flow/conserve momenta, time stepping/maximum
+// time step). The same entries in the scene that uses them are accepted.
 #include <deal.II/base/mpi.h>
 
 #include <fluid_surface/io/parameter_file.h>
@@ -42,8 +42,8 @@ main(int argc, char **argv)
       std::string outcome = name + ": accepted";
       try
         {
-          parse_parameter_file(prm, name);
-          Simulation(MPI_COMM_WORLD).parse_parameters(prm);
+          const ParameterFile file = parse_parameter_file(prm, name);
+          Simulation(MPI_COMM_WORLD).parse_parameters(prm, file);
         }
       catch (const InputError &error)
         {

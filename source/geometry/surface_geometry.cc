@@ -31,7 +31,6 @@ namespace FluidSurface
 
   SurfaceGeometry::SurfaceGeometry(const MPI_Comm communicator)
     : communicator(communicator)
-    , semi_axes(0.61, 0.61, 2.02)
     , tria(communicator)
     , position_dofs(tria)
   {}
@@ -88,30 +87,30 @@ namespace FluidSurface
   {
     prm.enter_subsection("geometry");
     const std::string s = prm.get("shape");
-    shape  = (s == "sphere"      ? Shape::sphere :
-              s == "ellipsoid"   ? Shape::ellipsoid :
-              s == "equilibrium" ? Shape::equilibrium :
-                                   Shape::mesh_file);
-    radius = prm.get_double("radius");
-    semi_axes = get_vector(prm, "semi-axes");
-    if (shape == Shape::ellipsoid &&
-        std::max({semi_axes[0], semi_axes[1], semi_axes[2]}) > 20 * std::min({semi_axes[0], semi_axes[1], semi_axes[2]}))
+    params.shape        = (s == "sphere"      ? Shape::sphere :
+                           s == "ellipsoid"   ? Shape::ellipsoid :
+                           s == "equilibrium" ? Shape::equilibrium :
+                                                Shape::mesh_file);
+    params.radius       = prm.get_double("radius");
+    params.semi_axes    = get_vector(prm, "semi-axes");
+    const Point<3> &a   = params.semi_axes;
+    if (params.shape == Shape::ellipsoid && std::max({a[0], a[1], a[2]}) > 20 * std::min({a[0], a[1], a[2]}))
       throw_invalid_entry("geometry/semi-axes",
                           prm.get("semi-axes"),
                           "semi-axes whose largest is at most 20 times the smallest (shape = ellipsoid)");
-    mesh_file              = prm.get("mesh file");
-    project_onto_ellipsoid = prm.get_bool("project onto ellipsoid");
-    refinement             = prm.get_integer("refinement");
-    position_degree        = prm.get_integer("position degree");
-    if (shape == Shape::mesh_file)
+    params.mesh_file              = prm.get("mesh file");
+    params.project_onto_ellipsoid = prm.get_bool("project onto ellipsoid");
+    params.refinement             = prm.get_integer("refinement");
+    params.position_degree        = prm.get_integer("position degree");
+    if (params.shape == Shape::mesh_file)
       {
-        std::ifstream in(mesh_file);
+        std::ifstream in(params.mesh_file);
         if (!in)
-          throw_invalid_entry("geometry/mesh file", mesh_file, "a readable gmsh mesh file");
+          throw_invalid_entry("geometry/mesh file", params.mesh_file, "a readable gmsh mesh file");
       }
     prm.leave_subsection();
     equilibrium.reset();
-    if (shape == Shape::equilibrium)
+    if (params.shape == Shape::equilibrium)
       {
         equilibrium = std::make_unique<AxisymmetricEquilibrium>();
         equilibrium->parse_parameters(prm);
@@ -119,23 +118,32 @@ namespace FluidSurface
   }
 
   std::string
+  SurfaceGeometry::shape_name(const Shape shape)
+  {
+    return shape == Shape::sphere      ? "sphere" :
+           shape == Shape::ellipsoid   ? "ellipsoid" :
+           shape == Shape::equilibrium ? "equilibrium" :
+                                         "mesh file";
+  }
+
+  std::string
   SurfaceGeometry::description() const
   {
     std::ostringstream out;
-    if (shape == Shape::sphere)
-      out << "sphere R = " << radius;
-    else if (shape == Shape::equilibrium)
+    if (params.shape == Shape::sphere)
+      out << "sphere R = " << params.radius;
+    else if (params.shape == Shape::equilibrium)
       out << (equilibrium->parameters().branch == AxisymmetricEquilibrium::Branch::prolate ? "prolate" : "oblate")
           << " rotating equilibrium, A = " << equilibrium->parameters().area
           << ", v = " << equilibrium->parameters().reduced_volume;
     else
       {
-        if (shape == Shape::mesh_file)
-          out << "mesh " << std::filesystem::path(mesh_file).filename().string() << (project_onto_ellipsoid ? " projected onto " : "");
-        if (shape == Shape::ellipsoid || project_onto_ellipsoid)
-          out << "ellipsoid [" << semi_axes[0] << ", " << semi_axes[1] << ", " << semi_axes[2] << "]";
+        if (params.shape == Shape::mesh_file)
+          out << "mesh " << std::filesystem::path(params.mesh_file).filename().string() << (params.project_onto_ellipsoid ? " projected onto " : "");
+        if (params.shape == Shape::ellipsoid || params.project_onto_ellipsoid)
+          out << "ellipsoid [" << params.semi_axes[0] << ", " << params.semi_axes[1] << ", " << params.semi_axes[2] << "]";
       }
-    out << ", Q" << position_degree << " geometry, refinement " << refinement;
+    out << ", Q" << params.position_degree << " geometry, refinement " << params.refinement;
     return out.str();
   }
 
@@ -146,7 +154,7 @@ namespace FluidSurface
     Triangulation<2, 3> coarse;
     GridIn<2, 3>        grid_in;
     grid_in.attach_triangulation(coarse);
-    std::ifstream in(mesh_file);
+    std::ifstream in(params.mesh_file);
     try
       {
         grid_in.read_msh(in);
@@ -157,28 +165,28 @@ namespace FluidSurface
         if (!reader.empty() && reader.back() == '.')
           reader.pop_back();
         throw_invalid_entry("geometry/mesh file",
-                            mesh_file,
+                            params.mesh_file,
                             "an ASCII gmsh mesh (msh 2.2 or 4.1) of quadrilaterals; the reader says: " + reader);
       }
     if (!coarse.all_reference_cells_are_hyper_cube())
-      throw InputError(mesh_file + ": the mesh has triangles; expected an all-quadrilateral surface mesh "
+      throw InputError(params.mesh_file + ": the mesh has triangles; expected an all-quadrilateral surface mesh "
                                    "(recombine in gmsh: Mesh.RecombineAll = 1, Mesh.SubdivisionAlgorithm = 1).");
     for (const auto &cell : coarse.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary())
-          throw InputError(mesh_file + ": the surface has a boundary edge at " +
+          throw InputError(params.mesh_file + ": the surface has a boundary edge at " +
                            Utilities::to_string(cell->face(f)->center()[0]) + ", " +
                            Utilities::to_string(cell->face(f)->center()[1]) + ", " +
                            Utilities::to_string(cell->face(f)->center()[2]) +
                            "; expected a closed surface.");
-    if (coarse.n_active_cells() * std::pow(4.0, refinement) > max_cells)
+    if (coarse.n_active_cells() * std::pow(4.0, params.refinement) > max_cells)
       {
         unsigned int allowed = 0;
         while (coarse.n_active_cells() * std::pow(4.0, allowed + 1) <= max_cells)
           ++allowed;
         throw_invalid_entry("geometry/refinement",
-                            std::to_string(refinement),
-                            "at most " + std::to_string(max_cells) + " cells after refinement: the mesh " + mesh_file +
+                            std::to_string(params.refinement),
+                            "at most " + std::to_string(max_cells) + " cells after refinement: the mesh " + params.mesh_file +
                               " has " + std::to_string(coarse.n_active_cells()) + " cells" +
                               (coarse.n_active_cells() > max_cells ?
                                  std::string(" (too many even without refinement)") :
@@ -190,7 +198,7 @@ namespace FluidSurface
   void
   SurfaceGeometry::create()
   {
-    if (shape == Shape::mesh_file)
+    if (params.shape == Shape::mesh_file)
       read_mesh_file();
     else
       {
@@ -198,33 +206,33 @@ namespace FluidSurface
         tria.set_all_manifold_ids(0);
         tria.set_manifold(0, SphericalManifold<2, 3>(Point<3>()));
       }
-    tria.refine_global(refinement);
+    tria.refine_global(params.refinement);
     setup_position_space();
 
     // Nodes of the refined coarse geometry (on the unit sphere for the
     // generated shapes), then moved onto the requested shape.
     {
       VectorType owned(owned_dofs, communicator);
-      VectorTools::get_position_vector(MappingQ<2, 3>(position_degree), position_dofs, owned);
+      VectorTools::get_position_vector(MappingQ<2, 3>(params.position_degree), position_dofs, owned);
       set_position(owned);
     }
-    if (shape == Shape::sphere)
-      transform_nodes([this](const Point<3> &x) { return Point<3>(radius / x.norm() * x); });
-    else if (shape == Shape::ellipsoid)
+    if (params.shape == Shape::sphere)
+      transform_nodes([this](const Point<3> &x) { return Point<3>(params.radius / x.norm() * x); });
+    else if (params.shape == Shape::ellipsoid)
       transform_nodes([this](const Point<3> &x) {
         const Point<3> u = x / x.norm();
-        return Point<3>(semi_axes[0] * u[0], semi_axes[1] * u[1], semi_axes[2] * u[2]);
+        return Point<3>(params.semi_axes[0] * u[0], params.semi_axes[1] * u[1], params.semi_axes[2] * u[2]);
       });
-    else if (shape == Shape::equilibrium)
+    else if (params.shape == Shape::equilibrium)
       {
         solve_equilibrium_of_entries(*equilibrium);
         transform_nodes([this](const Point<3> &x) { return equilibrium->map_from_sphere(Point<3>(x / x.norm())); });
       }
-    else if (project_onto_ellipsoid)
+    else if (params.project_onto_ellipsoid)
       transform_nodes([this](const Point<3> &x) {
         double s = 0;
         for (unsigned int d = 0; d < 3; ++d)
-          s += x[d] * x[d] / (semi_axes[d] * semi_axes[d]);
+          s += x[d] * x[d] / (params.semi_axes[d] * params.semi_axes[d]);
         return Point<3>(x / std::sqrt(s));
       });
     // The manifold describes only the unit sphere; the position field is the geometry from now on.
@@ -235,7 +243,7 @@ namespace FluidSurface
   void
   SurfaceGeometry::setup_position_space()
   {
-    position_fe = std::make_unique<FESystem<2, 3>>(FE_Q<2, 3>(position_degree), 3);
+    position_fe = std::make_unique<FESystem<2, 3>>(FE_Q<2, 3>(params.position_degree), 3);
     position_dofs.distribute_dofs(*position_fe);
     owned_dofs = position_dofs.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(position_dofs, relevant_dofs);
@@ -394,7 +402,7 @@ namespace FluidSurface
     n_inward = Utilities::MPI::sum(n_inward, communicator);
     if (n_inward > 0)
       {
-        const std::string source = (shape == Shape::mesh_file ? mesh_file : std::string("generated mesh"));
+        const std::string source = (params.shape == Shape::mesh_file ? params.mesh_file : std::string("generated mesh"));
         throw InputError(source + ": " + Utilities::to_string(n_inward) + " of " +
                          Utilities::to_string(tria.n_global_active_cells()) +
                          " cells have inward normals; expected a closed, star-shaped surface whose cells "

@@ -128,20 +128,20 @@ namespace FluidSurface
         namespace fs = std::filesystem;
         std::error_code ec;
         if (fs::exists(directory() + "statistics") && !parameters.overwrite && !resuming)
-          error = parameter_file_name() + ": entry 'output/output directory' = '" + parameters.output_directory +
+          error = "entry 'output/output directory' = '" + parameters.output_directory +
                   "' holds the results of another run (statistics); expected a new directory, "
                   "or 'overwrite = true' in subsection output, or a resumed run.";
         else
           {
             fs::create_directories(directory() + "checkpoint", ec);
             if (ec)
-              error = parameter_file_name() + ": entry 'output/output directory' = '" + parameters.output_directory +
+              error = "entry 'output/output directory' = '" + parameters.output_directory +
                       "': cannot create it (" + ec.message() + ").";
           }
       }
     error = Utilities::MPI::broadcast(communicator, error, 0);
     if (!error.empty())
-      throw InputError(error);
+      throw EntryError(error);
   }
 
   bool

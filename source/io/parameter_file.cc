@@ -19,16 +19,10 @@ namespace FluidSurface
 {
   namespace
   {
-    std::string current_parameter_file;
+    /// For parameter_file_name() only (deprecated).
+    std::string last_parameter_file;
 
-    /// An entry that a parameter file sets: "subsection/entry" and the line of its `set`.
-    struct EntrySetInFile
-    {
-      std::string  path;
-      unsigned int line;
-    };
-    /// The entries the last file read by parse_parameter_file() sets (its included files not followed).
-    std::vector<EntrySetInFile> entries_set_in_file;
+    using EntrySetInFile = ParameterFile::Entry;
 
     std::string
     trim(const std::string &text)
@@ -287,26 +281,22 @@ namespace FluidSurface
     return v;
   }
 
-  dealii::Tensor<1, 3>
-  unit_vector(const dealii::Tensor<1, 3> &v)
-  {
-    const double largest = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
-    if (largest == 0)
-      return v;
-    const dealii::Tensor<1, 3> w = v / largest;
-    return w / w.norm();
-  }
-
   const std::string &
   parameter_file_name()
   {
-    return current_parameter_file;
+    return last_parameter_file;
   }
 
-  void
+  std::string
+  ParameterFile::label() const
+  {
+    return name.empty() ? std::string("parameters") : name;
+  }
+
+  ParameterFile
   parse_parameter_file(dealii::ParameterHandler &prm, const std::string &filename)
   {
-    current_parameter_file = filename;
+    last_parameter_file = filename;
     {
       std::ifstream probe(filename);
       if (!probe)
@@ -315,7 +305,7 @@ namespace FluidSurface
     try
       {
         prm.parse_input(filename, "", /*skip_undefined=*/false, /*assert_mandatory_entries_are_found=*/false);
-        entries_set_in_file = scan_entries_set(filename);
+        return ParameterFile{filename, scan_entries_set(filename)};
       }
     catch (const dealii::ExceptionBase &exc)
       {
@@ -352,19 +342,34 @@ namespace FluidSurface
   }
 
   void
-  reject_entries_unused_by_scene(const std::vector<std::string> &unused, const std::string &scene)
+  reject_entries_not_read(const ParameterFile &file, const ParametersRead &read)
   {
-    for (const EntrySetInFile &entry : entries_set_in_file)
-      for (const std::string &pattern : unused)
-        {
-          const bool whole_subsection = pattern.size() > 1 && pattern.compare(pattern.size() - 2, 2, "/*") == 0;
-          const bool match            = whole_subsection ? entry.path.rfind(pattern.substr(0, pattern.size() - 1), 0) == 0 :
-                                                           entry.path == pattern;
-          if (match)
-            throw InputError(current_parameter_file + ", line " + std::to_string(entry.line) + ": entry '" +
-                             entry.path + "' is set, but scene " + scene +
-                             " does not use it; expected no such entry (remove it, or choose the scene that uses it).");
-        }
+    const ParameterFile::Entry *first     = nullptr;
+    unsigned int                n_outside = 0;
+    std::string                 reason;
+    for (const ParameterFile::Entry &entry : file.entries_set)
+      {
+        const std::string subsection = entry.path.substr(0, entry.path.find('/'));
+        std::string       why;
+        if (std::find(read.subsections.begin(), read.subsections.end(), subsection) == read.subsections.end())
+          why = "does not read subsection '" + subsection + "'";
+        else if (std::find(read.ignored_entries.begin(), read.ignored_entries.end(), entry.path) !=
+                 read.ignored_entries.end())
+          why = "ignores it";
+        if (why.empty())
+          continue;
+        if (first == nullptr)
+          first = &entry, reason = why;
+        ++n_outside;
+      }
+    if (first == nullptr)
+      return;
+    const std::string more = n_outside == 1 ? std::string() :
+                                              " (and " + std::to_string(n_outside - 1) + " more such " +
+                                                (n_outside == 2 ? "entry" : "entries") + ")";
+    throw InputError(file.label() + ", line " + std::to_string(first->line) + ": entry '" + first->path +
+                     "' is set, but " + read.reader + " " + reason + more +
+                     "; expected no such entry (remove it, or choose a scene that reads it).");
   }
 
   void
@@ -372,7 +377,6 @@ namespace FluidSurface
                       const std::string &value,
                       const std::string &expected)
   {
-    const std::string file = current_parameter_file.empty() ? std::string("parameters") : current_parameter_file;
-    throw InputError(file + ": entry '" + entry_path + "' = '" + value + "': expected " + expected + ".");
+    throw EntryError("entry '" + entry_path + "' = '" + value + "': expected " + expected + ".");
   }
 } // namespace FluidSurface

@@ -1,6 +1,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <fluid_surface/base/vector_math.h>
 #include <fluid_surface/io/checkpoint.h>
 #include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/model/fluid_deformable_surface.h>
@@ -84,34 +85,41 @@ namespace FluidSurface
   void
   FluidDeformableSurface::parse_parameters(ParameterHandler &prm, const double maximum_time_step)
   {
-    reject_entries_unused_by_scene({"fixed surface/*", "fixed surface solver/*"}, "full");
     step.parse_parameters(prm, maximum_time_step);
     reparametrization.parse_parameters(prm, step.components().redistribution.mesh_quality_floor);
     run_request = StepRequest::flow_step(step.components().redistribution.law);
     prm.enter_subsection("initial state");
-    angular_velocity     = prm.get_double("angular velocity");
-    equilibrium_rotation = prm.get_bool("equilibrium rotation");
-    if (equilibrium_rotation && geometry.equilibrium_shape() == nullptr)
+    initial_entries.angular_velocity     = prm.get_double("angular velocity");
+    initial_entries.equilibrium_rotation = prm.get_bool("equilibrium rotation");
+    if (initial_entries.equilibrium_rotation && geometry.equilibrium_shape() == nullptr)
       throw_invalid_entry("initial state/equilibrium rotation",
                           "true",
                           "false unless geometry/shape = equilibrium (there is no equilibrium to take ω from)");
-    rotation_axis = unit_vector(get_vector(prm, "rotation axis"));
-    if (rotation_axis.norm() == 0)
+    initial_entries.rotation_axis = unit_vector(get_vector(prm, "rotation axis"));
+    if (initial_entries.rotation_axis.norm() == 0)
       throw_invalid_entry("initial state/rotation axis", prm.get("rotation axis"), "a non-zero vector");
-    rotation_centre      = Point<3>(get_vector(prm, "rotation centre"));
-    translation_velocity = get_vector(prm, "translation velocity");
-    velocity_perturbation = prm.get_double("velocity perturbation");
-    shape_perturbation    = prm.get_double("shape perturbation");
-    random_seed           = prm.get_integer("random seed");
-    if (prm.get("perturbation form") == "azimuthal" && shape_perturbation == 0)
+    initial_entries.rotation_centre       = Point<3>(get_vector(prm, "rotation centre"));
+    initial_entries.translation_velocity  = get_vector(prm, "translation velocity");
+    initial_entries.velocity_perturbation = prm.get_double("velocity perturbation");
+    initial_entries.shape_perturbation    = prm.get_double("shape perturbation");
+    initial_entries.random_seed           = prm.get_integer("random seed");
+    initial_entries.perturbation_form     = prm.get("perturbation form") == "azimuthal" ?
+                                      InitialState::PerturbationForm::azimuthal :
+                                      InitialState::PerturbationForm::random;
+    initial_entries.azimuthal_wavenumber  = prm.get_integer("azimuthal wavenumber");
+    initial_entries.azimuthal_odd         = prm.get("azimuthal parity") == "odd";
+    prm.leave_subsection();
+    if (initial_entries.perturbation_form == InitialState::PerturbationForm::azimuthal && initial_entries.shape_perturbation == 0)
       throw_invalid_entry("initial state/perturbation form",
                           "azimuthal",
                           "random unless shape perturbation > 0 (the mode is the form of that displacement)");
-    if (prm.get("perturbation form") == "azimuthal")
-      azimuthal_perturbation = std::make_unique<AzimuthalHarmonic>(rotation_axis,
-                                                                   prm.get_integer("azimuthal wavenumber"),
-                                                                   prm.get("azimuthal parity") == "odd");
-    prm.leave_subsection();
+    azimuthal_perturbation.reset();
+    if (initial_entries.perturbation_form == InitialState::PerturbationForm::azimuthal)
+      azimuthal_perturbation = std::make_unique<AzimuthalHarmonic>(initial_entries.rotation_axis,
+                                                                   initial_entries.azimuthal_wavenumber,
+                                                                   initial_entries.azimuthal_odd);
+    angular_velocity = initial_entries.angular_velocity;
+    rotation_centre  = initial_entries.rotation_centre;
   }
 
   namespace
@@ -192,22 +200,22 @@ namespace FluidSurface
   void
   FluidDeformableSurface::setup()
   {
-    if (shape_perturbation > 0)
+    if (initial_entries.shape_perturbation > 0)
       {
-        const SmoothRandomField field(random_seed, 0);
+        const SmoothRandomField field(initial_entries.random_seed, 0);
         const Point<3>          centre(geometry.measure().centre_of_mass);
         geometry.transform_nodes([&](const Point<3> &x) {
           const Tensor<1, 3> radial = x - centre;
           const double       delta =
             azimuthal_perturbation ? azimuthal_perturbation->normalized_real_part(radial) : field(x);
-          return Point<3>(x + shape_perturbation * delta * radial / radial.norm());
+          return Point<3>(x + initial_entries.shape_perturbation * delta * radial / radial.norm());
         });
         // Spinning about the unperturbed centre would give the surface the momentum ω e × A(c' − c), and L
         // about its centre of mass would then change by (c(t) − c(0)) × P wherever the discrete centre of
         // mass does not move exactly with P/A.
         rotation_centre += Point<3>(geometry.measure().centre_of_mass) - centre;
       }
-    if (equilibrium_rotation)
+    if (initial_entries.equilibrium_rotation)
       angular_velocity = geometry.equilibrium_shape()->angular_velocity();
     step.setup_system();
     state.reinit(step.dof_handler(), geometry);
@@ -261,12 +269,12 @@ namespace FluidSurface
     VectorTools::interpolate(geometry.mapping(),
                              step.dof_handler(),
                              InitialVelocity(step.dof_handler().get_fe().n_components(),
-                                             translation_velocity,
+                                             initial_entries.translation_velocity,
                                              angular_velocity,
-                                             rotation_axis,
+                                             initial_entries.rotation_axis,
                                              rotation_centre,
-                                             velocity_perturbation,
-                                             random_seed),
+                                             initial_entries.velocity_perturbation,
+                                             initial_entries.random_seed),
                              initial);
     // Y starts at X so that the state is complete; κ, y, p are outputs of a step.
     step.copy_position_into(geometry.position(), initial);
@@ -377,7 +385,7 @@ namespace FluidSurface
     data.set("model/element", step.dof_handler().get_fe().get_name());
     data.set("model/factorizations", step.solver().n_factorizations());
     // The seeded random fields are drawn in setup() only; the seed is kept for the record.
-    data.set("model/random seed", random_seed);
+    data.set("model/random seed", initial_entries.random_seed);
     reparametrization.save(data);
     step.save_history(data);
     if (anchored)

@@ -2,6 +2,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <fluid_surface/base/vector_math.h>
 #include <fluid_surface/flow/energy_functionals.h>
 #include <fluid_surface/geometry/azimuthal_harmonic.h>
 #include <fluid_surface/io/checkpoint.h>
@@ -356,7 +357,7 @@ namespace FluidSurface
       }
     catch (const std::exception &exc)
       {
-        throw InputError(parameter_file_name() + ": diagnostics/reference equilibrium = " + reference_equilibrium +
+        throw EntryError("diagnostics/reference equilibrium = " + reference_equilibrium +
                          ": no rotating equilibrium with the run's area " + std::to_string(p.area) +
                          ", reduced volume " + std::to_string(p.reduced_volume) + " and angular momentum " +
                          std::to_string(p.angular_momentum) + " (" + exc.what() +

@@ -263,32 +263,35 @@ namespace FluidSurface
     // solver` SurfaceFlow's; the Simulation declares each once.
   }
 
+  ParametersRead
+  FixedSurfaceScene::parameters_read() const
+  {
+    return {"scene fixed surface",
+            {"model",
+             "geometry",
+             "output",
+             "flow",
+             "fixed surface",
+             "fixed surface solver",
+             "linear solver",
+             "time stepping"},
+            {"flow/conserve momenta",
+             "flow/rigid motion regularization",
+             "time stepping/adaptive",
+             "time stepping/minimum time step",
+             "time stepping/maximum time step",
+             "time stepping/growth factor",
+             "time stepping/shrink factor",
+             "time stepping/easy steps before growth",
+             "time stepping/energy tolerance",
+             "time stepping/error tolerance",
+             "time stepping/scheme",
+             "time stepping/frame"}};
+  }
+
   void
   FixedSurfaceScene::parse_parameters(ParameterHandler &prm)
   {
-    reject_entries_unused_by_scene({"flow/conserve momenta",
-                                    "flow/rigid motion regularization",
-                                    "bending/*",
-                                    "volume constraint/*",
-                                    "mesh redistribution/*",
-                                    "conservation projection/*",
-                                    "initial state/*",
-                                    "equilibrium/*",
-                                    "diagnostics/*",
-                                    "checkpoint/*",
-                                    "steady state/*",
-                                    "reparametrization/*",
-                                    "time stepping/adaptive",
-                                    "time stepping/minimum time step",
-                                    "time stepping/maximum time step",
-                                    "time stepping/growth factor",
-                                    "time stepping/shrink factor",
-                                    "time stepping/easy steps before growth",
-                                    "time stepping/energy tolerance",
-                                    "time stepping/error tolerance",
-                                    "time stepping/scheme",
-                                    "geometry iteration/*"},
-                                   "fixed surface");
     prm.enter_subsection("fixed surface");
     const std::string name = prm.get("problem");
     problem     = name == "manufactured sphere"    ? Problem::manufactured_sphere :
@@ -316,11 +319,10 @@ namespace FluidSurface
     fluid.parse_parameters(prm);
     flow_parameters.parse(prm, fluid);
 
-    prm.enter_subsection("geometry");
-    const std::string shape = prm.get("shape");
-    sphere_radius           = prm.get_double("radius");
-    semi_axes               = get_vector(prm, "semi-axes");
-    prm.leave_subsection();
+    const SurfaceGeometry::Parameters &shape_entries = geometry.parameters();
+    const std::string                  shape         = SurfaceGeometry::shape_name(shape_entries.shape);
+    sphere_radius                                    = shape_entries.radius;
+    semi_axes                                        = shape_entries.semi_axes;
     const bool needs_sphere = problem != Problem::manufactured_ellipsoid;
     if (needs_sphere && shape != "sphere")
       throw_invalid_entry("geometry/shape", shape, "sphere (fixed surface/problem = " + name + ")");

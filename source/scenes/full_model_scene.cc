@@ -29,6 +29,30 @@ namespace FluidSurface
     , model(geometry)
   {}
 
+  ParametersRead
+  FullModelScene::parameters_read() const
+  {
+    return {"scene full",
+            {"model",
+             "geometry",
+             "equilibrium",
+             "output",
+             "initial state",
+             "flow",
+             "bending",
+             "volume constraint",
+             "mesh redistribution",
+             "conservation projection",
+             "geometry iteration",
+             "reparametrization",
+             "linear solver",
+             "time stepping",
+             "steady state",
+             "diagnostics",
+             "checkpoint"},
+            {}};
+  }
+
   void
   FullModelScene::parse_parameters(ParameterHandler &prm)
   {
@@ -272,8 +296,7 @@ namespace FluidSurface
   {
     const CheckpointData data = checkpoint.read();
     if (data.get_string("simulation/geometry") != geometry.description())
-      throw InputError((parameter_file_name().empty() ? std::string("parameters") : parameter_file_name()) +
-                       ": the checkpoint " + checkpoint.last_slot() + " was written for the geometry '" +
+      throw EntryError("the checkpoint " + checkpoint.last_slot() + " was written for the geometry '" +
                        data.get_string("simulation/geometry") + "', the parameter file describes '" +
                        geometry.description() + "'; expected the geometry of the run to resume, or resume = false.");
     model.load(data);

@@ -15,6 +15,12 @@ namespace FluidSurface
     , wall_timer(wall_timer)
   {}
 
+  ParametersRead
+  GeometryScene::parameters_read() const
+  {
+    return {"scene geometry", {"model", "geometry", "equilibrium", "output"}, {}};
+  }
+
   void
   GeometryScene::parse_parameters(ParameterHandler &)
   {}

@@ -36,14 +36,16 @@ Exit status: 0 success (or stopped after 'checkpoint/steps per run'), 1 a comput
     /**
      * Calls @p body and returns its exit status, or that of the exception it
      * throws: RunStopped → its own (its message on @p out if 0, else on
-     * @p err), InputError → 2, any other std::exception → 1 (RunFailed: a
+     * @p err), InputError → 2 (an EntryError after "@p file: ", the parameter
+     * file as @p body last set it), any other std::exception → 1 (RunFailed: a
      * computation that could not go on; its message on one line).
      */
     int
     exit_status_of(const std::function<int()> &body,
                    std::ostream               &out,
                    std::ostream               &err,
-                   const MPI_Comm              communicator)
+                   const MPI_Comm              communicator,
+                   const std::string          &file)
     {
       try
         {
@@ -54,6 +56,11 @@ Exit status: 0 success (or stopped after 'checkpoint/steps per run'), 1 a comput
           if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
             (exc.exit_status() == 0 ? out : err) << "fluid_surface: " << exc.what() << std::endl;
           return exc.exit_status();
+        }
+      catch (const EntryError &exc)
+        {
+          error_message(file + ": " + exc.what(), err, communicator);
+          return 2;
         }
       catch (const InputError &exc)
         {
@@ -68,6 +75,9 @@ Exit status: 0 success (or stopped after 'checkpoint/steps per run'), 1 a comput
         }
     }
 
+    /// What `fluid_surface --equilibrium FILE` reads: subsection equilibrium (AxisymmetricEquilibrium).
+    const ParametersRead equilibrium_command_reads = {"--equilibrium", {"equilibrium"}, {}};
+
     /// `fluid_surface --equilibrium FILE`: the equilibrium's report on @p out.
     int
     run_equilibrium(const std::vector<std::string> &args,
@@ -80,6 +90,13 @@ Exit status: 0 success (or stopped after 'checkpoint/steps per run'), 1 a comput
           error_message("--equilibrium needs exactly one parameter file; see fluid_surface --help", err, communicator);
           return 2;
         }
+      {
+        // The scene rule: the file is read with every declaration, so that an entry of another subsection is
+        // named as one --equilibrium does not read.
+        dealii::ParameterHandler every_parameter;
+        Simulation::declare_parameters(every_parameter);
+        reject_entries_not_read(parse_parameter_file(every_parameter, args[1]), equilibrium_command_reads);
+      }
       std::ostringstream report;
       const int          status = run_equilibrium_command(args[1], report);
       if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
@@ -94,7 +111,8 @@ Exit status: 0 success (or stopped after 'checkpoint/steps per run'), 1 a comput
               std::ostream                   &err,
               const MPI_Comm                  communicator)
   {
-    const bool root = dealii::Utilities::MPI::this_mpi_process(communicator) == 0;
+    const bool  root = dealii::Utilities::MPI::this_mpi_process(communicator) == 0;
+    std::string file_label = ParameterFile().label();
     return exit_status_of(
       [&]() {
         if (args.empty() || args[0] == "--help" || args[0] == "-h")
@@ -104,7 +122,11 @@ Exit status: 0 success (or stopped after 'checkpoint/steps per run'), 1 a comput
             return args.empty() ? 2 : 0;
           }
         if (args[0] == "--equilibrium")
-          return run_equilibrium(args, out, err, communicator);
+          {
+            if (args.size() == 2)
+              file_label = args[1];
+            return run_equilibrium(args, out, err, communicator);
+          }
         dealii::ParameterHandler prm;
         Simulation::declare_parameters(prm);
         if (args[0] == "--print-parameters")
@@ -121,32 +143,39 @@ Exit status: 0 success (or stopped after 'checkpoint/steps per run'), 1 a comput
             error_message("unexpected arguments; see fluid_surface --help", err, communicator);
             return 2;
           }
-        parse_parameter_file(prm, file);
+        file_label                         = file;
+        const ParameterFile parameter_file = parse_parameter_file(prm, file);
         if (!validate_only)
-          return run_simulation(prm, out, err, communicator);
+          return run_simulation(prm, out, err, communicator, parameter_file);
         Simulation simulation(communicator, out);
-        simulation.parse_parameters(prm);
+        simulation.parse_parameters(prm, parameter_file);
         if (root)
           out << file << ": valid" << std::endl;
         return 0;
       },
       out,
       err,
-      communicator);
+      communicator,
+      file_label);
   }
 
   int
-  run_simulation(dealii::ParameterHandler &prm, std::ostream &out, std::ostream &err, const MPI_Comm communicator)
+  run_simulation(dealii::ParameterHandler &prm,
+                 std::ostream             &out,
+                 std::ostream             &err,
+                 const MPI_Comm            communicator,
+                 const ParameterFile      &file)
   {
     return exit_status_of(
       [&]() {
         Simulation simulation(communicator, out);
-        simulation.parse_parameters(prm);
+        simulation.parse_parameters(prm, file);
         simulation.run(prm);
         return 0;
       },
       out,
       err,
-      communicator);
+      communicator,
+      file.label());
   }
 } // namespace FluidSurface

@@ -55,7 +55,7 @@ namespace FluidSurface
   }
 
   void
-  Simulation::parse_parameters(ParameterHandler &prm)
+  Simulation::parse_parameters(ParameterHandler &prm, const ParameterFile &file)
   {
     prm.enter_subsection("model");
     const std::string name = prm.get("scene");
@@ -68,17 +68,11 @@ namespace FluidSurface
       scene = std::make_unique<FixedSurfaceScene>(geometry, output, statistics, pcout);
     else
       scene = std::make_unique<GeometryScene>(geometry, output, statistics, pcout, wall_timer);
+    reject_entries_not_read(file, scene->parameters_read());
 
     geometry.parse_parameters(prm);
     output.parse_parameters(prm);
     scene->parse_parameters(prm);
-    if (name != "full")
-      {
-        Checkpoint checkpoint;
-        checkpoint.parse_parameters(prm);
-        if (checkpoint.resume_mode() == Checkpoint::Resume::yes)
-          throw_invalid_entry("checkpoint/resume", "true", "false or auto: only scene full writes checkpoints");
-      }
   }
 
   void

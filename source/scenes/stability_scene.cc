@@ -108,6 +108,33 @@ namespace FluidSurface
     prm.leave_subsection();
   }
 
+  ParametersRead
+  StabilityScene::parameters_read() const
+  {
+    return {"scene stability",
+            {"model",
+             "geometry",
+             "equilibrium",
+             "output",
+             "initial state",
+             "flow",
+             "bending",
+             "volume constraint",
+             "mesh redistribution",
+             "conservation projection",
+             "geometry iteration",
+             "linear solver",
+             "time stepping",
+             "stability"},
+            {"time stepping/end time",
+             "time stepping/adaptive",
+             "time stepping/minimum time step",
+             "time stepping/growth factor",
+             "time stepping/shrink factor",
+             "time stepping/easy steps before growth",
+             "time stepping/energy tolerance"}};
+  }
+
   void
   StabilityScene::parse_parameters(ParameterHandler &prm)
   {
@@ -127,25 +154,20 @@ namespace FluidSurface
     model.parse_parameters(prm, time.maximum_step_size());
     model.set_time_scheme(time.scheme(), time.frame());
     if (!from_checkpoint && geometry.equilibrium_shape() == nullptr)
-      {
-        prm.enter_subsection("geometry");
-        const std::string shape = prm.get("shape");
-        prm.leave_subsection();
-        throw_invalid_entry("geometry/shape",
-                            shape,
-                            "equilibrium with scene stability (the rotating state whose spectrum is computed)");
-      }
-    prm.enter_subsection("initial state");
-    if (!from_checkpoint && !prm.get_bool("equilibrium rotation"))
+      throw_invalid_entry("geometry/shape",
+                          SurfaceGeometry::shape_name(geometry.parameters().shape),
+                          "equilibrium with scene stability (the rotating state whose spectrum is computed)");
+    const FluidDeformableSurface::InitialState &initial = model.initial_state();
+    if (!from_checkpoint && !initial.equilibrium_rotation)
       throw_invalid_entry("initial state/equilibrium rotation",
                           "false",
                           "true with scene stability (the equilibrium rotates rigidly with its ω)");
-    for (const std::string entry : {"shape perturbation", "velocity perturbation"})
-      if (!from_checkpoint && prm.get_double(entry) != 0)
-        throw_invalid_entry("initial state/" + entry,
-                            prm.get(entry),
+    for (const auto &[entry, value] : {std::make_pair("shape perturbation", initial.shape_perturbation),
+                                       std::make_pair("velocity perturbation", initial.velocity_perturbation)})
+      if (!from_checkpoint && value != 0)
+        throw_invalid_entry(std::string("initial state/") + entry,
+                            Utilities::to_string(value),
                             "0 with scene stability (it perturbs the equilibrium itself, one mode at a time)");
-    prm.leave_subsection();
 
     prm.enter_subsection("stability");
     wavenumbers.clear();
@@ -544,8 +566,7 @@ namespace FluidSurface
     if (!(drift <= equilibrium_tolerance))
       {
         std::ostringstream msg;
-        msg << (parameter_file_name().empty() ? std::string("parameters") : parameter_file_name())
-            << ": the start is not an equilibrium of the discrete model: its surface moves beyond a rigid rotation at "
+        msg << "the start is not an equilibrium of the discrete model: its surface moves beyond a rigid rotation at "
             << std::setprecision(3) << drift << " R per unit time, above 'stability/equilibrium tolerance' = "
             << equilibrium_tolerance;
         if (from_checkpoint)
@@ -556,7 +577,7 @@ namespace FluidSurface
         else
           msg << "; expected an equilibrium (geometry/shape = equilibrium with its ω, a finer "
               << "'geometry/refinement' or 'equilibrium/*' settings that converge).";
-        throw InputError(msg.str());
+        throw EntryError(msg.str());
       }
 
     spectrum_file = output.directory() + "spectrum.csv";

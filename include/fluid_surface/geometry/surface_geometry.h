@@ -12,6 +12,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fluid_surface/base/types.h>
 #include <fluid_surface/reference/axisymmetric_equilibrium.h>
 
 #include <functional>
@@ -21,8 +22,6 @@
 namespace FluidSurface
 {
   /// The vector type of every distributed field (position, velocity, curvature).
-  using VectorType = dealii::TrilinosWrappers::MPI::Vector;
-
   /**
    * The moving closed surface S: a parallel::distributed::Triangulation<2,3>
    * of quadrilaterals, the position field X ∈ [Q_k]³ and the MappingFEField
@@ -46,6 +45,22 @@ namespace FluidSurface
       mesh_file,
       equilibrium ///< a rotating axisymmetric equilibrium of `subsection equilibrium`
     };
+
+    /// `subsection geometry`, parsed once by parse_parameters(); the scenes that check the shape read it here.
+    struct Parameters
+    {
+      Shape            shape  = Shape::ellipsoid;
+      double           radius = 1.0;                       ///< R of shape = sphere
+      dealii::Point<3> semi_axes{0.61, 0.61, 2.02};        ///< (a, b, c) of the ellipsoid, or of the projection
+      std::string      mesh_file;                          ///< shape = mesh file
+      bool             project_onto_ellipsoid = true;      ///< of the nodes of a mesh file
+      unsigned int     refinement             = 3;         ///< global refinements
+      unsigned int     position_degree        = 2;         ///< k of X ∈ [Q_k]³
+    };
+
+    /// The name of @p shape in the parameter file (`geometry/shape`).
+    static std::string
+    shape_name(const Shape shape);
 
     /// Integral measures of the surface.
     struct Measures
@@ -145,13 +160,13 @@ namespace FluidSurface
     unsigned int
     degree() const
     {
-      return position_degree;
+      return params.position_degree;
     }
     /// A Gauss quadrature exact enough for integrals over the curved cells.
     dealii::QGauss<2>
     quadrature() const
     {
-      return dealii::QGauss<2>(position_degree + 2);
+      return dealii::QGauss<2>(params.position_degree + 2);
     }
     MPI_Comm
     get_communicator() const
@@ -193,6 +208,13 @@ namespace FluidSurface
     willmore_energy() const
     {
       return curvature().willmore_energy;
+    }
+
+    /// The entries of `subsection geometry`.
+    const Parameters &
+    parameters() const
+    {
+      return params;
     }
 
     /**
@@ -241,13 +263,7 @@ namespace FluidSurface
 
     MPI_Comm communicator;
 
-    Shape                  shape = Shape::ellipsoid;
-    double                 radius = 1.0;
-    dealii::Point<3>       semi_axes;
-    std::string            mesh_file;
-    bool                   project_onto_ellipsoid = true;
-    unsigned int           refinement             = 3;
-    unsigned int           position_degree        = 2;
+    Parameters             params;
     std::unique_ptr<AxisymmetricEquilibrium> equilibrium;
 
     dealii::parallel::distributed::Triangulation<2, 3> tria;

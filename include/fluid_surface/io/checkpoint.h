@@ -6,7 +6,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 
-#include <fluid_surface/geometry/surface_geometry.h>
+#include <fluid_surface/base/types.h>
 
 #include <cstdint>
 #include <map>

@@ -91,35 +91,75 @@ namespace FluidSurface
   get_vector(const dealii::ParameterHandler &prm, const std::string &name);
 
   /**
-   * @p v / |v|, computed without overflow or underflow of |v| for any finite @p v; zero for v = 0.
+   * An InputError about the value of an entry whose message does not yet name the parameter file
+   * ("entry 'geometry/radius' = '2': expected 1 (…)"): the program, which knows the file, puts its name in
+   * front ("FILE: entry …") when it reports the error (run_program(), run_simulation()).
    */
-  dealii::Tensor<1, 3>
-  unit_vector(const dealii::Tensor<1, 3> &v);
+  class EntryError : public InputError
+  {
+  public:
+    using InputError::InputError;
+  };
 
   /**
-   * Reads @p filename into @p prm. Every failure of deal.II's parser (missing
-   * file, unknown subsection or entry, a value that fails its pattern) becomes
-   * an InputError whose message names the file, the line and what was expected; a value that fails its
-   * pattern as "FILE, line N: entry 'subsection/entry' = 'value': expected PATTERN".
+   * A parameter file as parse_parameter_file() read it: its name, for messages, and the entries it sets,
+   * for the scene rule (reject_entries_not_read()). An empty ParameterFile stands for parameters set in code
+   * (ParameterHandler::set), which are not checked.
    */
-  void
+  struct ParameterFile
+  {
+    /// An entry that the file sets: "subsection/entry" and the line of its `set`.
+    struct Entry
+    {
+      std::string  path;
+      unsigned int line = 0;
+    };
+
+    std::string        name;        ///< the file name; "" for parameters set in code
+    std::vector<Entry> entries_set; ///< the `set` lines of the file (its included files not followed)
+
+    /// The file as the start of a message: its name, or "parameters" for parameters set in code.
+    std::string
+    label() const;
+  };
+
+  /**
+   * What a scene (or the command --equilibrium) reads of the parameter file: the subsections whose entries it
+   * uses, and the entries of those subsections that it ignores. Every entry the file sets outside them is an
+   * error (reject_entries_not_read()): an entry that changes nothing is a mistake of the user.
+   */
+  struct ParametersRead
+  {
+    std::string              reader;          ///< in messages: "scene stability", "--equilibrium"
+    std::vector<std::string> subsections;     ///< the top-level subsections it reads
+    std::vector<std::string> ignored_entries; ///< "subsection/entry" of those subsections that it does not use
+  };
+
+  /**
+   * Reads @p filename into @p prm and returns its name and the entries it sets. Every failure of deal.II's parser
+   * (missing file, unknown subsection or entry, a value that fails its pattern) becomes an InputError whose
+   * message names the file, the line and what was expected; a value that fails its pattern as
+   * "FILE, line N: entry 'subsection/entry' = 'value': expected PATTERN".
+   */
+  ParameterFile
   parse_parameter_file(dealii::ParameterHandler &prm, const std::string &filename);
 
   /**
-   * Throws an InputError "FILE: entry 'subsection/entry' = 'value': expected ..."
-   * for a value that passed its pattern but is inconsistent with the others.
+   * Throws an EntryError "entry 'subsection/entry' = 'value': expected ..." for a value that passed its
+   * pattern but is inconsistent with the others; the program names the file in front of it.
    */
   [[noreturn]] void
   throw_invalid_entry(const std::string &entry_path,
                       const std::string &value,
                       const std::string &expected);
 
-  /// Throws an InputError "FILE, line N: entry 'subsection/entry' is set, but scene SCENE does not use it"
-  /// for the first entry of @p unused that the last file read by parse_parameter_file() sets. An element of
-  /// @p unused is "subsection/entry", or "subsection/*" for every entry of a subsection. Entries set by
-  /// other means (ParameterHandler::set) are not checked.
+  /**
+   * Throws an InputError "FILE, line N: entry 'subsection/entry' is set, but scene S does not read subsection
+   * 'subsection'; expected …" for the first entry that @p file sets outside what @p read reads (a subsection
+   * it does not read, or one of its ignored entries), with the number of further such entries.
+   */
   void
-  reject_entries_unused_by_scene(const std::vector<std::string> &unused, const std::string &scene);
+  reject_entries_not_read(const ParameterFile &file, const ParametersRead &read);
 
   /**
    * Prints every parameter as a valid parameter file: for each entry its help
@@ -129,7 +169,9 @@ namespace FluidSurface
   print_documented_parameters(const dealii::ParameterHandler &prm, std::ostream &out);
 
   /**
-   * The name of the parameter file that was read, for messages ("" before).
+   * The name of the last parameter file that parse_parameter_file() read ("" before). Deprecated: the last
+   * global state of this file, kept only for reference/axisymmetric_equilibrium.cc, which names the file itself;
+   * everything else gets the name from the ParameterFile or throws an EntryError.
    */
   const std::string &
   parameter_file_name();

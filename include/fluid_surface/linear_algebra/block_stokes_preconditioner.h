@@ -10,6 +10,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fluid_surface/base/types.h>
+
 #include <array>
 #include <memory>
 #include <string>
@@ -30,7 +32,7 @@ namespace FluidSurface
   class BlockStokesPreconditioner
   {
   public:
-    using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+    using VectorType = FluidSurface::VectorType;
 
     /// How the velocity AMG is built.
     struct VelocityAMGParameters

@@ -32,6 +32,29 @@ namespace FluidSurface
   class FluidDeformableSurface
   {
   public:
+    /// `subsection initial state`, parsed once: u₀ = U + ω₀ e × (x − c) + ε_u r(x), the shape perturbed by ε_X.
+    struct InitialState
+    {
+      /// `perturbation form`: the form δ(x) of the radial displacement ε_X δ(x).
+      enum class PerturbationForm
+      {
+        random,
+        azimuthal
+      };
+
+      dealii::Tensor<1, 3> translation_velocity;       ///< U
+      double               angular_velocity = 0;       ///< ω₀ as given
+      bool                 equilibrium_rotation = false; ///< ω₀ from the geometry's equilibrium shape
+      dealii::Tensor<1, 3> rotation_axis;              ///< e (normalized)
+      dealii::Point<3>     rotation_centre;            ///< c as given
+      double               velocity_perturbation = 0;  ///< ε_u
+      double               shape_perturbation    = 0;  ///< ε_X
+      PerturbationForm     perturbation_form     = PerturbationForm::random;
+      unsigned int         azimuthal_wavenumber  = 2;     ///< m of the azimuthal form
+      bool                 azimuthal_odd         = false; ///< its parity (`azimuthal parity = odd`)
+      unsigned int         random_seed           = 1;     ///< seed of the perturbations
+    };
+
     /// The model on @p geometry (kept by reference; setup() or load() moves it to the state).
     FluidDeformableSurface(SurfaceGeometry &geometry);
 
@@ -40,7 +63,6 @@ namespace FluidSurface
     declare_parameters(dealii::ParameterHandler &prm);
     /**
      * Reads them; τ_max = @p maximum_time_step of the run bounds the drift-correction time from below.
-     * Rejects (InputError) entries that scene full does not use.
      */
     void
     parse_parameters(dealii::ParameterHandler &prm, const double maximum_time_step);
@@ -89,11 +111,17 @@ namespace FluidSurface
      */
     void
     restart_from(const SurfaceState &new_state);
+    /// The entries of `subsection initial state` (the scenes that check the initial state read them here).
+    const InitialState &
+    initial_state() const
+    {
+      return initial_entries;
+    }
     /// The axis e of the initial rotation (`initial state/rotation axis`, normalized).
     const dealii::Tensor<1, 3> &
     initial_rotation_axis() const
     {
-      return rotation_axis;
+      return initial_entries.rotation_axis;
     }
     /// ω₀ of the initial rotation (after setup(): the equilibrium's ω with `equilibrium rotation`).
     double
@@ -244,15 +272,9 @@ namespace FluidSurface
     /// What advance() asks of the step: the flow (or the prescribed velocity) with the parsed mesh law.
     StepRequest run_request;
 
-    // `subsection initial state`: u₀ = U + ω₀ e × (x − c) + ε_u r(x), the shape perturbed by ε_X.
-    dealii::Tensor<1, 3> translation_velocity;    ///< U
-    double               angular_velocity{};      ///< ω₀
-    bool                 equilibrium_rotation{};  ///< ω₀ from the geometry's equilibrium shape
-    dealii::Tensor<1, 3> rotation_axis;           ///< e (normalized)
-    dealii::Point<3>     rotation_centre;         ///< c, moved with the centre of mass by a shape perturbation
-    double               velocity_perturbation{}; ///< ε_u
-    double               shape_perturbation{};    ///< ε_X
-    unsigned int         random_seed{};           ///< seed of the perturbations
+    InitialState     initial_entries;
+    double           angular_velocity{}; ///< ω₀ (the equilibrium's with `equilibrium rotation`, after setup())
+    dealii::Point<3> rotation_centre;    ///< c, moved with the centre of mass by a shape perturbation
     bool anchored = false; ///< `mesh redistribution/anchor time` has passed (checkpoint key `model/anchored`)
     /// The single mode of `perturbation form = azimuthal`; nullptr for the random field.
     std::unique_ptr<AzimuthalHarmonic> azimuthal_perturbation;

@@ -4,6 +4,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fluid_surface/base/types.h>
+
 #include <deque>
 #include <functional>
 
@@ -89,7 +91,7 @@ namespace FluidSurface
   class FixedPointAcceleration
   {
   public:
-    using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+    using VectorType = FluidSurface::VectorType;
     /// The inner product in which the residuals are measured.
     using InnerProduct = std::function<double(const VectorType &, const VectorType &)>;
 

@@ -65,7 +65,12 @@ namespace FluidSurface
     /// Declares `subsection fixed surface`, `subsection time stepping` and (via SurfaceFlow) `subsection flow`.
     static void
     declare_parameters(dealii::ParameterHandler &prm);
-    /// Reads them; checks that the problem matches the shape of `subsection geometry`.
+    /// `model`, `geometry`, `output`, `flow` (not its momentum entries), `fixed surface`, `fixed surface solver`,
+    /// `linear solver` and of `time stepping` the end time and the time step.
+    ParametersRead
+    parameters_read() const override;
+    /// Reads them; checks that the problem matches the shape of `subsection geometry` (SurfaceGeometry::parameters(),
+    /// which the geometry has parsed first).
     void
     parse_parameters(dealii::ParameterHandler &prm) override;
 

@@ -37,6 +37,10 @@ namespace FluidSurface
                    const dealii::ConditionalOStream &pcout,
                    const dealii::Timer              &wall_timer);
 
+    /// Every subsection but `fixed surface`, `fixed surface solver` and `stability`.
+    ParametersRead
+    parameters_read() const override;
+
     /// Reads the time stepping, the model, the diagnostics and the checkpoints.
     void
     parse_parameters(dealii::ParameterHandler &prm) override;

@@ -22,6 +22,10 @@ namespace FluidSurface
                   const dealii::ConditionalOStream &pcout,
                   const dealii::Timer              &wall_timer);
 
+    /// `model`, `geometry`, `equilibrium`, `output`.
+    ParametersRead
+    parameters_read() const override;
+
     /// The scene has no parameters of its own.
     void
     parse_parameters(dealii::ParameterHandler &prm) override;

@@ -4,6 +4,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <fluid_surface/io/parameter_file.h>
+
 #include <ostream>
 #include <string>
 #include <vector>
@@ -29,13 +31,16 @@ namespace FluidSurface
    * The run of the experiment that @p prm describes (declared by
    * Simulation::declare_parameters() and set): parses it, runs it and turns
    * its exceptions into the exit status and message exactly as run_program()
-   * does. For tests that set parameters in code instead of a file.
+   * does. @p file is the parameter file @p prm was read from (its name for
+   * messages, its entries for the scene rule); by default none, for tests that
+   * set parameters in code.
    */
   int
   run_simulation(dealii::ParameterHandler &prm,
                  std::ostream             &out,
                  std::ostream             &err,
-                 const MPI_Comm            communicator);
+                 const MPI_Comm            communicator,
+                 const ParameterFile      &file = ParameterFile());
 } // namespace FluidSurface
 
 #endif

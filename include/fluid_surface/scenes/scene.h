@@ -6,20 +6,28 @@
 
 #include <fluid_surface/geometry/surface_geometry.h>
 #include <fluid_surface/io/output_writer.h>
+#include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/io/statistics_file.h>
 
 namespace FluidSurface
 {
   /**
-   * What a run computes (`model/scene`): GeometryScene, FixedSurfaceScene or
-   * FullModelScene. Simulation creates the selected scene, lets it read its
-   * parameters, prepares the output directory and builds the surface; then
-   * run() computes and writes into the output directory.
+   * What a run computes (`model/scene`): GeometryScene, FixedSurfaceScene,
+   * FullModelScene or StabilityScene. Simulation creates the selected scene,
+   * rejects every entry of the parameter file that the scene does not read
+   * (parameters_read()), lets it read its parameters, prepares the output
+   * directory and builds the surface; then run() computes and writes into the
+   * output directory.
    */
   class Scene
   {
   public:
     virtual ~Scene() = default;
+
+    /// The subsections of the parameter file that the scene reads (its own and those of the components it
+    /// runs), and the entries in them that it ignores; the name of the scene for messages.
+    virtual ParametersRead
+    parameters_read() const = 0;
 
     /// Reads and checks the parameters of the scene itself (InputError on bad input).
     virtual void

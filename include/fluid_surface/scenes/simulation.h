@@ -8,6 +8,7 @@
 
 #include <fluid_surface/geometry/surface_geometry.h>
 #include <fluid_surface/io/output_writer.h>
+#include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/io/statistics_file.h>
 #include <fluid_surface/scenes/scene.h>
 
@@ -32,9 +33,13 @@ namespace FluidSurface
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
-    /// Creates the selected scene and reads and checks the parameters of every component (InputError on bad input).
+    /**
+     * Creates the selected scene, rejects every entry that @p file sets outside what the scene reads
+     * (Scene::parameters_read(); none for parameters set in code) and reads and checks the parameters of every
+     * component (InputError on bad input).
+     */
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm, const ParameterFile &file = ParameterFile());
 
     /**
      * Prepares the output directory (@p prm is echoed as used_parameters.prm),

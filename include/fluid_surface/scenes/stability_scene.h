@@ -43,6 +43,11 @@ namespace FluidSurface
     /// Declares `subsection stability`.
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+    /// Those of scene full but `reparametrization` (the map has no safety valve), `steady state`,
+    /// `diagnostics` and `checkpoint`, with `stability`; of `time stepping` not the end time nor the entries of
+    /// the step size control (each map takes T/τ steps of τ).
+    ParametersRead
+    parameters_read() const override;
     /// Reads it, the time stepping (τ, scheme) and the model; InputError unless the shape is an unperturbed
     /// equilibrium rotating rigidly with its ω.
     void
