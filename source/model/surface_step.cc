@@ -349,8 +349,11 @@ namespace FluidSurface
     const ConservationProjection &conservation = parts.conservation;
     if (conservation.enabled && request.prescribed_velocity() == nullptr)
       {
-        result.node_correction = conservation.project_area_and_volume(
-          geometry, step.evaluated_curvature, state.target_area, state.target_volume, parts.volume_constraint.enabled);
+        // The co-rotating step takes the modes of the new surface itself: its last evaluated surface is in the
+        // frame, turned by τΩ against the lab.
+        const SurfaceGeometry::Curvature modes = step.co_rotating ? geometry.curvature() : step.evaluated_curvature;
+        result.node_correction                 = conservation.project_area_and_volume(
+          geometry, modes, state.target_area, state.target_volume, parts.volume_constraint.enabled);
         VectorType projected = system.owned_vector();
         projected            = candidate_solution;
         system.copy_position_into(geometry.position(), projected);
