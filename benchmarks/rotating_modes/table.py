@@ -31,7 +31,7 @@ def linearized(shape, refinement, m, parity):
         return None
     if fine is None:
         return coarse[0], coarse[1], "tau 0.02"
-    return fine[0] + (fine[0] - coarse[0]) / 3, fine[1] + (fine[1] - coarse[1]) / 3, "tau -> 0 (0.02, 0.01)"
+    return fine[0] + (fine[0] - coarse[0]) / 3, fine[1] + (fine[1] - coarse[1]) / 3, "tau -> 0 from 0.02 and 0.01"
 
 
 def main():
