@@ -58,6 +58,60 @@ namespace FluidSurface
   }
 
 
+  namespace
+  {
+    /**
+     * The coefficients c of the rigid motion of the shape from the sums of RigidMotion::fit() (the right-hand sides
+     * ∫(u·ν)(r_j·ν) at [6..11], the Gram matrix at [12..47]), with the Tikhonov term or the spectral cutoff ε|S| =
+     * @p cutoff.
+     */
+    Vector<double>
+    fitted_coefficients(const std::array<double, 48> &sums, const double cutoff, const bool spectral_cutoff)
+    {
+      // The rigid motion of the shape: R minimizing ∫(u·ν − R·ν)² + ε|S| |c|², c the coefficients of R in the
+      // scaled basis. ε cuts off the motions that hardly move the shape: the rotation of a body about its own
+      // axis of symmetry (R·ν ≡ 0) moves no surface, and its mesh need not move.
+      Vector<double> rhs(6), coefficients(6);
+      for (unsigned int j = 0; j < 6; ++j)
+        rhs(j) = sums[6 + j];
+      if (spectral_cutoff)
+        {
+          // A spectral cutoff of the Gram matrix G instead: the motions with ∫(R·ν)² ≥ 2ε|S| per unit coefficient
+          // are fitted exactly (a rigid velocity is followed to round-off), those below ε|S| not at all (the spin
+          // of an axisymmetric body), with a smooth step between.
+          LAPACKFullMatrix<double> gram(6, 6);
+          for (unsigned int j = 0; j < 6; ++j)
+            for (unsigned int l = 0; l < 6; ++l)
+              gram(j, l) = sums[12 + 6 * j + l];
+          FullMatrix<double> eigenvectors(6, 6); // the columns
+          Vector<double>     eigenvalues(6);
+          gram.compute_eigenvalues_symmetric(-1.0, std::numeric_limits<double>::max(), 0.0, eigenvalues, eigenvectors);
+          for (unsigned int k = 0; k < eigenvalues.size(); ++k)
+            {
+              const double ratio  = std::min(1.0, std::max(0.0, eigenvalues(k) / cutoff - 1.0));
+              const double filter = ratio * ratio * (3.0 - 2.0 * ratio);
+              if (filter == 0)
+                continue;
+              double projection = 0;
+              for (unsigned int j = 0; j < 6; ++j)
+                projection += eigenvectors(j, k) * rhs(j);
+              for (unsigned int j = 0; j < 6; ++j)
+                coefficients(j) += filter * projection / eigenvalues(k) * eigenvectors(j, k);
+            }
+        }
+      else
+        {
+          FullMatrix<double> normal_matrix(6, 6), inverse(6, 6);
+          for (unsigned int j = 0; j < 6; ++j)
+            for (unsigned int l = 0; l < 6; ++l)
+              normal_matrix(j, l) = sums[12 + 6 * j + l] + (j == l ? cutoff : 0.0);
+          inverse.invert(normal_matrix);
+          inverse.vmult(coefficients, rhs);
+        }
+      return coefficients;
+    }
+  } // namespace
+
   RigidMotion
   RigidMotion::tisserand(const SurfaceGeometry &geometry, const DoFHandler<2, 3> &dofs, const VectorType &state)
   {
@@ -182,47 +236,7 @@ namespace FluidSurface
                         ArrayView<double>(sums.data(), sums.size()));
     std::copy(sums.begin(), sums.begin() + 6, motion.momenta.begin());
 
-    // The rigid motion of the shape: R minimizing ∫(u·ν − R·ν)² + ε|S| |c|², c the coefficients of R in the
-    // scaled basis. ε cuts off the motions that hardly move the shape: the rotation of a body about its own
-    // axis of symmetry (R·ν ≡ 0) moves no surface, and its mesh need not move.
-    Vector<double> rhs(6), coefficients(6);
-    for (unsigned int j = 0; j < 6; ++j)
-      rhs(j) = sums[6 + j];
-    const double cutoff = rigid_motion_cutoff * m.area;
-    if (spectral_cutoff)
-      {
-        // A spectral cutoff of the Gram matrix G instead: the motions with ∫(R·ν)² ≥ 2ε|S| per unit coefficient
-        // are fitted exactly (a rigid velocity is followed to round-off), those below ε|S| not at all (the spin
-        // of an axisymmetric body), with a smooth step between.
-        LAPACKFullMatrix<double> gram(6, 6);
-        for (unsigned int j = 0; j < 6; ++j)
-          for (unsigned int l = 0; l < 6; ++l)
-            gram(j, l) = sums[12 + 6 * j + l];
-        FullMatrix<double> eigenvectors(6, 6); // the columns
-        Vector<double>     eigenvalues(6);
-        gram.compute_eigenvalues_symmetric(-1.0, std::numeric_limits<double>::max(), 0.0, eigenvalues, eigenvectors);
-        for (unsigned int k = 0; k < eigenvalues.size(); ++k)
-          {
-            const double ratio  = std::min(1.0, std::max(0.0, eigenvalues(k) / cutoff - 1.0));
-            const double filter = ratio * ratio * (3.0 - 2.0 * ratio);
-            if (filter == 0)
-              continue;
-            double projection = 0;
-            for (unsigned int j = 0; j < 6; ++j)
-              projection += eigenvectors(j, k) * rhs(j);
-            for (unsigned int j = 0; j < 6; ++j)
-              coefficients(j) += filter * projection / eigenvalues(k) * eigenvectors(j, k);
-          }
-      }
-    else
-      {
-        FullMatrix<double> normal_matrix(6, 6), inverse(6, 6);
-        for (unsigned int j = 0; j < 6; ++j)
-          for (unsigned int l = 0; l < 6; ++l)
-            normal_matrix(j, l) = sums[12 + 6 * j + l] + (j == l ? cutoff : 0.0);
-        inverse.invert(normal_matrix);
-        inverse.vmult(coefficients, rhs);
-      }
+    const Vector<double> coefficients = fitted_coefficients(sums, rigid_motion_cutoff * m.area, spectral_cutoff);
     for (unsigned int d = 0; d < 3; ++d)
       {
         motion.translation[d] = coefficients(d);

@@ -263,6 +263,41 @@ namespace FluidSurface
     new_field.compress(VectorOperation::insert);
   }
 
+  std::string
+  SurfaceReparametrization::relax_mesh(SurfaceStep      &step,
+                                       const VectorType &start_surface,
+                                       const VectorType &start_fields,
+                                       VectorType       &state) const
+  {
+    SurfaceGeometry        &geometry = step.moved_geometry();
+    const DoFHandler<2, 3> &dofs     = step.dof_handler();
+    StepRequest relaxation_request;
+    relaxation_request.velocity           = StepRequest::Velocity::at_rest;
+    relaxation_request.global_constraints = false;
+    // The target is always the membrane energy relative to S₀: with law bgn the conformal distribution of
+    // the current surface is the one that degraded (a bgn prolate went from quality 0.098 to 0.088).
+    relaxation_request.law    = MeshRedistribution::Law::reference;
+    relaxation_request.solver = StepRequest::Solver::fresh_klu;
+    const double relaxation_time = step.components().redistribution.relaxation_time;
+    const double tau             = relaxation_time > 0 ? 10 * relaxation_time : 1.0;
+    VectorType   surface = start_surface, fields = start_fields;
+    std::string  failure;
+    for (unsigned int iteration = 0; iteration < iterations && failure.empty(); ++iteration)
+      {
+        const SurfaceStep::Result relaxation = step.advance(relaxation_request, tau);
+        if (!relaxation.solved)
+          {
+            failure = relaxation.message;
+            break;
+          }
+        geometry.set_position(closest_points(geometry, surface));
+        transfer(geometry, surface, geometry.position(), dofs, fields, state);
+        surface = geometry.position();
+        fields  = state;
+      }
+    return failure;
+  }
+
   SurfaceReparametrization::Result
   SurfaceReparametrization::reparametrize(SurfaceStep                   &step,
                                           SurfaceState                  &accepted,
@@ -306,34 +341,9 @@ namespace FluidSurface
     const DoFHandler<2, 3>       &dofs         = step.dof_handler();
     VectorType                    state(dofs.locally_owned_dofs(), comm);
     state = accepted.solution;
-    {
-      StepRequest relaxation_request;
-      relaxation_request.velocity           = StepRequest::Velocity::at_rest;
-      relaxation_request.global_constraints = false;
-      // The target is always the membrane energy relative to S₀: with law bgn the conformal distribution of
-      // the current surface is the one that degraded (a bgn prolate went from quality 0.098 to 0.088).
-      relaxation_request.law    = MeshRedistribution::Law::reference;
-      relaxation_request.solver = StepRequest::Solver::fresh_klu;
-      const double relaxation_time = step.components().redistribution.relaxation_time;
-      const double tau             = relaxation_time > 0 ? 10 * relaxation_time : 1.0;
-      VectorType   surface = kept_position, fields = accepted.solution;
-      std::string  failure;
-      for (unsigned int iteration = 0; iteration < iterations && failure.empty(); ++iteration)
-        {
-          const SurfaceStep::Result relaxation = step.advance(relaxation_request, tau);
-          if (!relaxation.solved)
-            {
-              failure = relaxation.message;
-              break;
-            }
-          geometry.set_position(closest_points(geometry, surface));
-          transfer(geometry, surface, geometry.position(), dofs, fields, state);
-          surface = geometry.position();
-          fields  = state;
-        }
-      if (!failure.empty())
-        return restore("the relaxation of the mesh failed: " + failure);
-    }
+    const std::string failure = relax_mesh(step, kept_position, accepted.solution, state);
+    if (!failure.empty())
+      return restore("the relaxation of the mesh failed: " + failure);
     // The relaxed surface differs from the old one by its interpolation error, far more than a step's drift:
     // the projection's modes ñ, Hñ are those of the surface it starts from, so it is repeated on the
     // projected surface.

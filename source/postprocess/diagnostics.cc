@@ -403,6 +403,47 @@ namespace FluidSurface
     mean_rotation_comparison = text.str();
   }
 
+  namespace
+  {
+    /**
+     * The values of @p v that follow from the inertia tensor @p I and the angular momentum and kinetic energy
+     * already in @p v: the eigenvalues λ₁ ≤ λ₂ ≤ λ₃, the elongation axis, e(λ), Ω = I⁻¹L, the tilt angle and the
+     * rigid fraction.
+     */
+    void
+    set_inertia_values(const Tensor<2, 3> &I, Diagnostics::Values &v)
+    {
+      LAPACKFullMatrix<double> inertia(3, 3);
+      for (unsigned int d = 0; d < 3; ++d)
+        for (unsigned int e = 0; e < 3; ++e)
+          inertia(d, e) = I[d][e];
+      FullMatrix<double> eigenvectors;
+      Vector<double>     eigenvalues;
+      inertia.compute_eigenvalues_symmetric(-1e300, 1e300, 0, eigenvalues, eigenvectors);
+      // LAPACK returns them ascending.
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          v.eigenvalues[d]     = eigenvalues(d);
+          v.elongation_axis[d] = eigenvectors(d, 0);
+        }
+      // A sign convention makes the axis reproducible: its largest component is positive.
+      unsigned int largest = 0;
+      for (unsigned int d = 1; d < 3; ++d)
+        if (std::abs(v.elongation_axis[d]) > std::abs(v.elongation_axis[largest]))
+          largest = d;
+      if (v.elongation_axis[largest] < 0)
+        v.elongation_axis *= -1.0;
+      const double gap01 = eigenvalues(1) - eigenvalues(0), gap12 = eigenvalues(2) - eigenvalues(1);
+      v.symmetry_deviation = std::min(gap01, gap12) / ((eigenvalues(0) + eigenvalues(1) + eigenvalues(2)) / 3.0);
+      v.rotation_vector    = invert(I) * v.angular_momentum;
+      const double omega_norm = v.rotation_vector.norm();
+      v.tilt_angle = omega_norm > 0 ? std::acos(std::min(1.0, std::abs(v.rotation_vector * v.elongation_axis) / omega_norm)) *
+                                        180.0 / numbers::PI :
+                                      0.0;
+      v.rigid_fraction = v.kinetic_energy > 0 ? 0.5 * (v.rotation_vector * v.angular_momentum) / v.kinetic_energy : 0.0;
+    }
+  } // namespace
+
   Diagnostics::Values
   Diagnostics::evaluate(const SurfaceGeometry &geometry, const DoFHandler<2, 3> &dofs, const VectorType &state) const
   {
@@ -465,42 +506,15 @@ namespace FluidSurface
     v.max_normal_velocity = Utilities::MPI::max(max_un, geometry.get_communicator());
     v.kinetic_energy      = local[0];
     v.angular_velocity    = local[1] / m.area;
-    LAPACKFullMatrix<double> inertia(3, 3);
-    Tensor<2, 3>             I;
+    Tensor<2, 3> I;
     for (unsigned int d = 0; d < 3; ++d)
       {
         v.linear_momentum[d]  = local[2 + d];
         v.angular_momentum[d] = local[5 + d];
         for (unsigned int e = 0; e < 3; ++e)
-          {
-            I[d][e] = local[8 + 3 * d + e];
-            inertia(d, e) = I[d][e];
-          }
+          I[d][e] = local[8 + 3 * d + e];
       }
-    FullMatrix<double> eigenvectors;
-    Vector<double>     eigenvalues;
-    inertia.compute_eigenvalues_symmetric(-1e300, 1e300, 0, eigenvalues, eigenvectors);
-    // LAPACK returns them ascending.
-    for (unsigned int d = 0; d < 3; ++d)
-      {
-        v.eigenvalues[d]     = eigenvalues(d);
-        v.elongation_axis[d] = eigenvectors(d, 0);
-      }
-    // A sign convention makes the axis reproducible: its largest component is positive.
-    unsigned int largest = 0;
-    for (unsigned int d = 1; d < 3; ++d)
-      if (std::abs(v.elongation_axis[d]) > std::abs(v.elongation_axis[largest]))
-        largest = d;
-    if (v.elongation_axis[largest] < 0)
-      v.elongation_axis *= -1.0;
-    const double gap01 = eigenvalues(1) - eigenvalues(0), gap12 = eigenvalues(2) - eigenvalues(1);
-    v.symmetry_deviation = std::min(gap01, gap12) / ((eigenvalues(0) + eigenvalues(1) + eigenvalues(2)) / 3.0);
-    v.rotation_vector    = invert(I) * v.angular_momentum;
-    const double omega_norm = v.rotation_vector.norm();
-    v.tilt_angle = omega_norm > 0 ? std::acos(std::min(1.0, std::abs(v.rotation_vector * v.elongation_axis) / omega_norm)) *
-                                      180.0 / numbers::PI :
-                                    0.0;
-    v.rigid_fraction = v.kinetic_energy > 0 ? 0.5 * (v.rotation_vector * v.angular_momentum) / v.kinetic_energy : 0.0;
+    set_inertia_values(I, v);
     if (reference_shape)
       {
         const auto d = l2_distance(geometry, reference_meridian, reference_shape->equatorial_radius());

@@ -113,60 +113,8 @@ namespace FluidSurface
     try
       {
         while (time.before_end())
-          {
-            const double                             tau  = time.step_size();
-            const SurfaceStep::Result step = model.advance(tau);
-            if (!step.solved)
-              {
-                retry_step(tau, step.failure, step.message, step.failure_details);
-                continue;
-              }
-            if (time.error_control() && step.error_estimate > time.error_bound())
-              {
-                std::ostringstream reason;
-                reason << "local error estimate " << std::setprecision(3) << step.error_estimate
-                       << " above 'error tolerance' " << time.error_bound();
-                retry_step(tau, StepFailure::error_estimate, reason.str(), "", std::max(0.2, time.error_step_factor(step.error_estimate)));
-                continue;
-              }
-            const Energies                       candidate = candidate_energies();
-            const EnergyStepController::Decision energy =
-              energy_control.decide(total_energy, candidate.total, tau);
-            if (energy.verdict == EnergyStepController::Verdict::reject)
-              {
-                if (model.start_corrected_steps())
-                  {
-                    model.restore_last_state();
-                    time.repeat_step();
-                    energy_control.forget_rejection();
-                    pcout << "    step rejected (" << energy.reason
-                          << "); retried at the same τ with the iterated geometry" << std::endl;
-                  }
-                else
-                  retry_step(tau, StepFailure::energy_rise, energy.reason, "");
-                continue;
-              }
-            accept_step(tau, step.error_estimate, candidate, energy);
-            const SurfaceReparametrization::Jumps jumps = reparametrize_if_due();
-            const Diagnostics::Values    values = record_step(tau, step, jumps);
-            check_mesh_quality();
-            const bool steady = steady_state.reached(
-              {time.time(), total_energy, {values.eigenvalues[0], values.eigenvalues[1], values.eigenvalues[2]}},
-              kinetic_energy_excess(values));
-            if (output.due(time.time()) || !time.before_end() || steady)
-              write_output();
-            ++steps_this_run;
-            if (steady)
-              {
-                std::ostringstream reached;
-                reached << "reached at t = " << std::setprecision(8) << time.time() << ": "
-                        << steady_state.description();
-                steady_state_report = reached.str();
-                pcout << "-- steady state " << steady_state_report << std::endl;
-                break;
-              }
-            checkpoint_or_stop(stop_signals.received());
-          }
+          if (!attempt_step(stop_signals))
+            break; // the steady state
       }
     catch (const RunStopped &stop)
       {
@@ -198,6 +146,64 @@ namespace FluidSurface
 
     diagnostics.compare_with_mean_rotation(geometry);
     write_summary("completed");
+  }
+
+  bool
+  FullModelScene::attempt_step(const StopSignals &stop_signals)
+  {
+    const double                             tau  = time.step_size();
+    const SurfaceStep::Result step = model.advance(tau);
+    if (!step.solved)
+      {
+        retry_step(tau, step.failure, step.message, step.failure_details);
+        return true;
+      }
+    if (time.error_control() && step.error_estimate > time.error_bound())
+      {
+        std::ostringstream reason;
+        reason << "local error estimate " << std::setprecision(3) << step.error_estimate
+               << " above 'error tolerance' " << time.error_bound();
+        retry_step(tau, StepFailure::error_estimate, reason.str(), "", std::max(0.2, time.error_step_factor(step.error_estimate)));
+        return true;
+      }
+    const Energies                       candidate = candidate_energies();
+    const EnergyStepController::Decision energy =
+      energy_control.decide(total_energy, candidate.total, tau);
+    if (energy.verdict == EnergyStepController::Verdict::reject)
+      {
+        if (model.start_corrected_steps())
+          {
+            model.restore_last_state();
+            time.repeat_step();
+            energy_control.forget_rejection();
+            pcout << "    step rejected (" << energy.reason
+                  << "); retried at the same τ with the iterated geometry" << std::endl;
+          }
+        else
+          retry_step(tau, StepFailure::energy_rise, energy.reason, "");
+        return true;
+      }
+    accept_step(tau, step.error_estimate, candidate, energy);
+    const SurfaceReparametrization::Jumps jumps = reparametrize_if_due();
+    const Diagnostics::Values    values = record_step(tau, step, jumps);
+    check_mesh_quality();
+    const bool steady = steady_state.reached(
+      {time.time(), total_energy, {values.eigenvalues[0], values.eigenvalues[1], values.eigenvalues[2]}},
+      kinetic_energy_excess(values));
+    if (output.due(time.time()) || !time.before_end() || steady)
+      write_output();
+    ++steps_this_run;
+    if (steady)
+      {
+        std::ostringstream reached;
+        reached << "reached at t = " << std::setprecision(8) << time.time() << ": "
+                << steady_state.description();
+        steady_state_report = reached.str();
+        pcout << "-- steady state " << steady_state_report << std::endl;
+        return false;
+      }
+    checkpoint_or_stop(stop_signals.received());
+    return true;
   }
 
   void

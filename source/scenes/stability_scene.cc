@@ -490,6 +490,14 @@ namespace FluidSurface
   void
   StabilityScene::run()
   {
+    set_up_base_state();
+    measure_unperturbed_map();
+    compute_spectrum();
+  }
+
+  void
+  StabilityScene::set_up_base_state()
+  {
     if (from_checkpoint)
       {
         Checkpoint checkpoint;
@@ -526,6 +534,11 @@ namespace FluidSurface
     velocities = std::make_unique<NodalVectorField>(model.dof_handler(),
                                                     FluidDeformableSurface::velocity_component,
                                                     geometry.mapping());
+  }
+
+  void
+  StabilityScene::measure_unperturbed_map()
+  {
     pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ; the time-" << map_time
           << " map is " << n_steps << " steps of τ = " << tau << (bdf2 ? " (the first in four, τ/8 to τ/2)" : "")
           << std::endl;
@@ -579,7 +592,11 @@ namespace FluidSurface
               << "'geometry/refinement' or 'equilibrium/*' settings that converge).";
         throw EntryError(msg.str());
       }
+  }
 
+  void
+  StabilityScene::compute_spectrum()
+  {
     spectrum_file = output.directory() + "spectrum.csv";
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {

@@ -152,6 +152,14 @@ namespace FluidSurface
     double       maximum_energy_jump = 1e-2; ///< ε_F: a re-parametrization that changes F by more is not taken
 
   private:
+    /**
+     * The relaxation of the mesh: `iterations` solves of the mesh law alone (the velocity at rest, no global
+     * constraints, law reference towards S₀, a fresh KLU factorization), each followed by the closest-point
+     * projection of the nodes onto the surface before it (from @p start_surface) and the transfer of the fields
+     * (from @p start_fields) into @p state. Returns why a solve failed, or nothing.
+     */
+    std::string
+    relax_mesh(SurfaceStep &step, const VectorType &start_surface, const VectorType &start_fields, VectorType &state) const;
     unsigned int count = 0; ///< re-parametrizations so far
     /// The largest relative jumps of F, A, V and L of the re-parametrizations so far.
     Jumps largest_jumps = {{0, 0, 0, 0}};

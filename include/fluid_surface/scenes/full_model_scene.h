@@ -17,6 +17,8 @@
 
 namespace FluidSurface
 {
+  class StopSignals;
+
   /**
    * Scene `full`: the fluid deformable surface of the seed paper (surface
    * Navier–Stokes, bending, volume constraint, mesh redistribution) on the
@@ -71,9 +73,15 @@ namespace FluidSurface
     Energies
     candidate_energies();
     /**
+     * One attempt of a time step: solve, check the error estimate and the energy, accept, re-parametrize if due,
+     * record, write; a failed or rejected attempt is retried with a smaller τ by the next call. Returns false when
+     * the run has reached its steady state.
+     */
+    bool
+    attempt_step(const StopSignals &stop_signals);
+    /**
      * Undoes the last step (of size @p tau, not solved or rejected: @p failure, in one line @p reason; its
-     * advice comes from advice()) and shrinks τ for its
-     * retry; RunFailed when τ would fall below τ_min. A non-empty @p solver_report (the linear solver's own
+     * advice comes from advice()) and shrinks τ for its retry; RunFailed when τ would fall below τ_min. A non-empty @p solver_report (the linear solver's own
      * account of a failure) goes to error.log. @p factor > 0: shrink τ by it (the error control's) when it is
      * smaller than the shrink factor.
      */

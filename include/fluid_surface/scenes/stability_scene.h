@@ -58,6 +58,16 @@ namespace FluidSurface
     run() override;
 
   private:
+    /// The base state: the equilibrium of the geometry, or the end state of a checkpoint, settled if asked for.
+    void
+    set_up_base_state();
+    /// The unperturbed time-T map: the nodes' turn, the body's, and the check that the base state is an equilibrium
+    /// of the discrete model (InputError otherwise).
+    void
+    measure_unperturbed_map();
+    /// Arnoldi per wavenumber and parity, the rows of spectrum.csv, and RunFailed if a reported value did not converge.
+    void
+    compute_spectrum();
     /// A perturbation (δX, δu): the position in the geometry numbering, the velocity in the flow numbering
     /// (zero on p, κ, y, Y); both owned.
     struct Perturbation
