@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // fluid_surface: fluid deformable surfaces (surface Navier–Stokes + Helfrich bending) with deal.II.
 #include <deal.II/base/mpi.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Shared by the checkpoint_* tests: runs scene full in-process through run_simulation (main's exit statuses and
 // messages; the rotating prolate of full_rotation.prm, refinement 2, adaptive τ, t ∈ [0, 0.06]: 6 steps) with
 // prm overrides, captures the screen,

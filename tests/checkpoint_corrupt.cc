@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A corrupt or truncated newest checkpoint slot is detected on resume and the older slot used: run B
 // writes checkpoints every 2 steps and stops after 4 (slots at steps 2 and 4); the newest slot gets
 // one flipped byte, the run is resumed from the older one and must end with the statistics of the

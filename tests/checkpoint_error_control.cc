@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A resumed run with the error-controlled step size and the implicit geometry (time stepping/error tolerance,
 // geometry iteration) continues bit for bit: the error estimate's history (the nodes' normal speeds of the last
 // step and its τ) is kept in the checkpoint, and with scheme = BDF2 also the state before the last step. Run A

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Resuming on 2 MPI ranks a run checkpointed on 1: rank 0 alone runs A (uninterrupted) and B (stops
 // after 4 steps with a checkpoint); then both ranks resume B. The rows must agree with A to
 // rounding (the parallel solve orders its sums differently): same steps and τ, energies, area,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // ASPECT-style checkpoint test of scene full (rotating prolate, adaptive τ): run A goes to t = 0.06
 // without checkpoints; run B writes a checkpoint every 3 steps and stops after 4 ('steps per run'),
 // then is resumed (resume = true, in a directory that holds its statistics, overwrite = false) to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SIGINT and SIGTERM stop a run of scene full after the current step with a checkpoint and a
 // message (exit status 130 and 143); resumed, the run ends with the statistics of the uninterrupted
 // run A (t ∈ [0, 0.1], 10 steps). The signal comes from a second thread once the run has written three steps (the step at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A checkpoint that cannot be written is reported and the previous slot kept. Run B checkpoints at
 // step 2 and stops; it is resumed with files limited to 50 kB (RLIMIT_FSIZE: writes fail with EFBIG
 // as on a full disk, also for root), so that its checkpoint at step 4 fails, the run goes on, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The azimuthal moments Q_m of diagnostics/azimuthal modes against their first-order values on the unit sphere
 // displaced by one mode of `initial state/perturbation form = azimuthal` (ε = 1e-3, radial, refinement 3, Q2
 // geometry): x = (1 + εδ)x̂ and dA = (1 + 2εδ)dΩ give Q = (1/4π)∫ h(x̂)(1 + 4εδ) dΩ + O(ε²), so

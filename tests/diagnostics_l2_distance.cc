@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // E(L²) (seed eq. 8) and e(λ) against exact answers:
 // (1) the sections of a Q2 unit sphere against a sphere of radius 1.1: E = √(2π)·0.1 for both sections;
 // (2) a surface mapped onto the prolate rotating equilibrium (A = 4π, v = 0.75, ω = 2) against that

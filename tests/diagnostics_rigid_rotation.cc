@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Diagnostics against exact answers on the prolate spheroid [0.61, 0.61, 2.02] with the rigid rotation
 // u = 1.5 e_z × x: ω = 1.5, the inertia eigenvalues equal the exact spheroid moments (I_xx = I_yy > I_zz),
 // e(λ) = 0 to discretization, L = (0, 0, 1.5 I_zz), Ω = I⁻¹L = (0, 0, 1.5), tilt angle 0, rigid fraction 1,

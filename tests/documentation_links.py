@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Checks the documentation against the repository (ctest: documentation_links).
 
 1. Every relative link and image in README.md, CHANGELOG.md, doc/*.md and benchmarks/*/README.md points to an

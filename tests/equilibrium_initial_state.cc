@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Initial state from a rotating equilibrium (geometry/shape = equilibrium, initial state/equilibrium
 // rotation = true): the refined cube sphere mapped onto the prolate and oblate equilibria (A = 4π, v = 0.75,
 // ω = 2) reproduces their area, volume and Willmore energy ½∫H² (weak curvature) at the rates of the Q2

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/quadrature_lib.h>
 // Geometry access of the rotating equilibria (v 0.75, Be ω² = 4, A = 4π): the surface X(θ, φ) =
 // map_from_sphere(unit sphere point) integrated by a tensor-product Gauss (θ) × trapezoidal (φ) rule gives

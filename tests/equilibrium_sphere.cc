@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Sphere limit of the equilibrium solver: at reduced volume 1 the shape is the sphere with ½∫H² = 8π; near
 // the sphere both branches obey ½∫H² − 8π ≈ 16π(1 − v) (l = 2 mode) with p0 → 6/R², γ → 2p0/R; and along a
 // family of rotating equilibria dF_bend/dI_zz = ½ω² (first variation at fixed A and V), checked by central

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Rotating axisymmetric equilibria at A = 4π, Be = 1, reduced volume 0.75 (the reference table of
 // benchmarks/equilibrium/README.md): bending energy ½∫H², I_zz = ∫(x²+y²), the multipliers p0, γ, and the same
 // shapes reached by prescribing L = ω I_zz.

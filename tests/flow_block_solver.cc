@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Stationary surface Stokes on the unit sphere (manufactured solution, Re = 1, Q2 geometry) with the
 // block-preconditioned GMRES (AMG on the velocity block, pressure mass matrix for the Schur complement):
 // the GMRES iterations at refinements 1..4 (deterministic at np = 1, one thread) must stay bounded and

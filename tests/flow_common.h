@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Shared by the flow_* tests: runs one fixed-surface problem with prm overrides and prints numbers
 // in the form "m.mm x 10^e" so that numdiff (abs 1e-6 / rel 1e-8) checks three significant digits
 // of small quantities too.

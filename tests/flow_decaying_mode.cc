@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // u = exp(-λt) curl_S Y_l⁰ on the unit sphere, Navier–Stokes (convection on), Re = 10, BDF2,
 // refinement 2 and 3, τ = 0.05, t ∈ [0, 1]: the measured decay rate −ln(F(1)/F(0))/2 against
 // λ = (l(l+1) − 2)/Re, for l = 2 and 3; the last line uses the block-preconditioned solver.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The Killing field u = e_z × x on the fixed unit sphere is a steady Navier–Stokes solution
 // (p = ½(x² + y²)); Re = 10, BDF2, τ = 0.05, t ∈ [0, 1], penalty β = 1000: the relative change of
 // the kinetic energy must decrease under refinement (the penalty dissipates ‖λ‖²/η, η = β h^-3).

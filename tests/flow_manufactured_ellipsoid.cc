@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Stationary surface Stokes on the ellipsoid [1.27, 1.27, 0.47] (one Killing field, rotation
 // about z), manufactured solution u = n × ∇(xyz + x²y), p = xy² + z, Re = 1, geometry degree
 // 2 and 3, refinements 1..3: errors and rates (asymptotically 3, 2, 2, 3).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Stationary surface Stokes on the unit sphere, manufactured solution u = n × ∇(xyz + x²y),
 // p = xy² + z, Re = 1, Q2 geometry, refinements 1..3: errors ‖u − u_h‖, ‖∇_P(u − u_h)‖,
 // ‖p − p_h‖, ‖u_h·ν‖ and their rates (expected 3, 2, 2, 3). Also run with mpirun -np 2.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Tangentiality by a Lagrange multiplier λ ∈ Q_d, d = 1, 2, instead of the penalty, on the unit sphere
 // (direct solver). Stationary manufactured Stokes problem at refinements 2 and 3: the errors of penalty
 // (β = 10, q = 3), Q1 and Q2 multiplier, the L2 rate of the velocity, and whether the Q2 multiplier

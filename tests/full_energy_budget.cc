@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The discrete energy budget of scene full: B(T) = F(T) − F(0) + Σ_n τ_n D_n, D_n = (2/Re)‖σ(u^n)‖² the
 // dissipation rate of the step (statistics columns), must vanish as τ → 0 (backward Euler: B = O(τ), B < 0,
 // the numerical dissipation). Fixed τ = 0.02 … 0.0025 on t ∈ [0, 0.1], refinement 2: the prolate at rest

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // FixedPointAcceleration on a linear map G(x) = A x + b in ℝ^12 whose iteration matrix A has two eigenvalues
 // outside the unit disc (−1.5 and 1.2) and the rest inside (±0.1 … ±0.6): the plain fixed point diverges, Aitken's
 // single relaxation factor cannot tame both bad eigenvalues, Anderson's mixing of depth 5 converges (it is GMRES on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Geometry of the seed's prolate [0.61, 0.61, 2.02] and oblate [1.27, 1.27, 0.47] spheroids:
 // relative errors of area, volume (expected ~h^(2k)) and, for k = 2, of the Willmore energy ½∫H²
 // from the weak curvature (expected ~h^4), against exact values, with observed rates.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Bad input ends a run before any computation with one message that names the file, the
 // line or entry, and what was expected: missing file, unknown subsection, unknown entry, a value
 // failing its pattern, a non-positive semi-axis, BDF2 without the geometry it needs or with a growth factor

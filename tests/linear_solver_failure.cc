@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A factorization that fails (a singular matrix: all entries zero) is reported as one LinearSolverError whose
 // message names the solver and the stage, on one line; what Amesos prints on std::cerr and the Trilinos
 // exception go into its details (for error.log), nothing onto the screen. Amesos_Klu and Amesos_Mumps.

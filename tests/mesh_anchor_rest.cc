@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // mesh redistribution/anchor time: the rotating oblate equilibrium of prm/seeded_mode_oblate.prm at refinement 2,
 // unperturbed, with BGN's conformal rows (tangential law = conformal), to t = 0.6. The conformal rows let the
 // nodes creep and feed energy into the rotating steady state: F rises. Anchored at t = 0 (the membrane energy

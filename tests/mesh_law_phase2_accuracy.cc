@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Phase-2 accuracy of the mesh law (issue 22): the seeded prolate of prm/prolate.prm at refinement 3, relaxed to
 // t = 3.5. Its ⟨ω⟩[2.5, 3.5] and its smallest L² distance to the rotating equilibrium at L₀ are errors of the
 // discrete shape. The membrane law relative to the initial surface resolves the relaxed prolate worse than BGN's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The mesh law under a prescribed morph whose axis flips: the oblate ellipsoid (1.4, 1.4, 0.6) becomes the
 // prolate (2, 0.8, 0.8) with its long axis along x, by the linear velocity u = D x, D = diag(ln(a₁/a₀)),
 // t ∈ [0, 1], refinement 1, τ = 0.01. Law reference keeps the mesh quality above half its start at every step

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The safety valve (FluidDeformableSurface::reparametrize()) on the spheroid 1 : 1 : 2 (refinement 2) whose
 // parametrization was sheared by a twist about its axis, x ↦ R_z(1.2 z) x, which maps the spheroid onto itself,
 // rotating rigidly about its axis (ω = 2, momenta conserved); the mesh law's reference surface S₀ is the

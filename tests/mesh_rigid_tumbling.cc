@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The mesh law under a prescribed rigid tumbling: the ellipsoid 1 : 1.5 : 3 (refinement 0) turned about its
 // middle axis y through its centre, 50 turns in 8 steps per turn, at τ = 0.1 and τ = 1e-3 (|Ω| = (2π/8)/τ).
 // Law reference carries the nodes by the exact rotation: the mesh quality at the end equals its start to 1e-6

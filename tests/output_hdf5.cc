@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // HDF5/XDMF output (output/format = hdf5) of scene full (the rotating prolate of checkpoint_common.h, refinement 2):
 // 1. Two steps written as VTU (run V) and as HDF5 (run H): every field of H/solution-00002.h5 is read back with
 //    h5py and agrees, node by node, with V/solution-00002.vtu to the VTU's float32 rounding; the cells are the same

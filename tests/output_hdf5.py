@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Helper of the test output_hdf5: reads back what OutputWriter wrote.
 
 compare VTU H5     every point field of the HDF5 file H5 against the VTU file VTU of the same step

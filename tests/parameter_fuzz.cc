@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The fast subset of the parameter fuzzer (the full sweep is benchmarks/fuzz). (1) For every entry of
 // Simulation::declare_parameters, hostile values derived from its pattern (empty, a word, nan, inf, just
 // outside each bound, a wrong list length, a missing file) are checked with --validate: each is refused with

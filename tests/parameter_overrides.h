@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Test parameters as a list of ("subsection/entry", value) pairs set on a ParameterHandler
 // (shared by the flow and checkpoint tests).
 #ifndef fluid_surface_tests_parameter_overrides_h

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // doc/parameters.prm (what README points users to) is the output of `fluid_surface --print-parameters`:
 // a parameter added, removed or re-documented without regenerating it fails here. Regenerate with
 //   ./build/fluid_surface --print-parameters > doc/parameters.prm

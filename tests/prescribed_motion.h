@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A surface moved by a prescribed velocity through the mesh law of scene full
 // (FluidDeformableSurface::set_prescribed_velocity): the tests of the mesh law alone.
 #ifndef fluid_surface_tests_prescribed_motion_h

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Checks the shape of README.md (ctest: readme_format).
 
 README.md is a user's guide: at most 200 lines, and no line longer than 200 characters outside fenced code

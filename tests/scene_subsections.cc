@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The scene rule through the program (fluid_surface --validate, --equilibrium): an entry that the file sets
 // outside the subsections of its scene is refused with exit status 2 and one message naming the file, the line,
 // the entry and the scene, before any component reads its parameters. Scene stability with `steady state/window`

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A scene rejects an entry that the parameter file sets outside the subsections it reads, or that it ignores,
 // before any computation (an InputError: exit status 2 of fluid_surface), with a message naming the file, the
 // line, the entry and the scene: scene full with an entry of `fixed surface solver` or `fixed surface`, scene

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The step must not decide the physics (issue 33): the rotating oblate equilibrium at refinement 2, seeded with its
 // unstable mode m = 2 even (amplitude 1e-5), run at the fixed step τ = 0.1 with the step of prm/oblate.prm (backward
 // Euler, lagged geometry, lab frame), with BDF2 (one geometry correction) in the lab frame, and with BDF2 in the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The rows of a spectrum.csv of scene stability (the header first), each split at commas; for the stability tests.
 #ifndef fluid_surface_tests_spectrum_csv_h
 #define fluid_surface_tests_spectrum_csv_h

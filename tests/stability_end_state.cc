@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Scene stability with base state = checkpoint (the path of prm/stability_end_state_*.prm): a checkpoint of scene
 // full one step after the rotating oblate equilibrium of tests/stability_spectrum.cc (refinement 2), analysed
 // without azimuthal classes, from a seed of all modes m ≤ 4. Its leading growth rate must be the oblate's m = 2

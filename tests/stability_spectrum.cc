@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Scene stability on a coarse mesh (refinement 2): the rotating oblate equilibrium of prm/stability_oblate.prm,
 // m = 2 even only. Its leading eigenvalue pair is the oblate's instability: σ = 2.573 and co-rotating frequency
 // −2.54 at this refinement (the seeded nonlinear run gives 2.567 and −2.537 at refinement 3, benchmarks/spectrum).

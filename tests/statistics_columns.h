@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The columns of a `statistics` file by name (its `# N: name` header lines), for the tests that read one.
 #ifndef fluid_surface_tests_statistics_columns_h
 #define fluid_surface_tests_statistics_columns_h

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // `steady state`: a run of scene full ends once F is flat over the window and its kinetic energy is that of a
 // rigid rotation about the axis of largest inertia, K = |L|²/(2λ₃). A sphere at rest is such a state and ends
 // after one window; the prolate spinning about its long axis (the axis of smallest inertia) is not, even with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A run of scene full that stops early still writes its summary, whose first line says why: a mesh quality
 // floor of 0.99 stops a coarse prolate run after its first step (exit status 1, one message line); a run
 // stopped by `checkpoint/steps per run` (exit 0) says so too; a run that reaches its end time says

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A surface, its flow model and diagnostics built from the default parameters with a chosen shape
 // (shared by the diagnostics and equilibrium tests). The equilibrium is the prolate or oblate rotating
 // shape with A = 4π, v = 0.75 and ω = 2. Further entries: @p overrides.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/convergence: convergence in h of the full model (issue 22, item 3).
 #   phase 2: prm/prolate.prm to t = 10 (⟨ω⟩[5, 10], min E(L²)) and prm/oblate.prm to t = 3 (⟨ω⟩[2, 3], the growth
 #            rate of e(λ) on [1.2, 2.5]) at each refinement, for the mesh laws `experiments` (the prm files' law:

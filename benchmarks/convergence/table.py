@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/convergence: the tables and the plot from the runs of run.sh (arguments: the work folder, the output
 folder). Every run in the work folder counts: <shape>_<law>_r<N>[_halfdt] (phase 2) and <shape>_long_r<N> (end
 states). Writes results.csv (phase 2), end_states.csv and convergence.png to the output folder."""

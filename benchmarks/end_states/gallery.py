@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/end_states: a gallery of the end shapes, one sheet per start (prolate, oblate), rows v, columns L₀.
 Each cell is the run's last output, rendered by doc/scripts/render_snapshots.py (surface, its three principal
 slices, the velocity as green arrows, the rotation axis in red, the elongation axis in blue), with its shape class

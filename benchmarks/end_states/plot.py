@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/end_states: the phase diagram of end states, v against L₀, one panel per start (prolate, oblate);
 marker by shape class, colour by F − W (the rotational energy |L|²/(2λ₃) of a rigid end state), a red edge for a
 run that is not steady, and a ring around the points where the two starts end in different states (F differs by

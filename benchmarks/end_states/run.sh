@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/end_states: where runs end (issue 23, item 4). A = 4π, reduced volume v ∈ {0.65, 0.75, 0.85, 0.95},
 # L₀ ∈ {0, 5, 10, 20, 40}, each from a prolate and from an oblate spheroid spinning about its symmetry axis
 # (ω₀ = L₀/I_zz, the shipped seed of prm/prolate_long.prm), carried to its steady state (subsection steady state,

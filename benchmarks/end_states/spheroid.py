@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Semi-axes (a, a, c) of the spheroid of area 4π and reduced volume v (prolate: c > a, oblate: c < a), its
 surface moment of inertia I_zz = ∫(x² + y²) dA about the symmetry axis, and ω₀ = L₀/I_zz.
     python3 spheroid.py v prolate|oblate L0     prints: a c omega0 Izz"""

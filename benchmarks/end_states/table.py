@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/end_states: one row per run of run.sh from its statistics and summary.
     /usr/bin/python3 benchmarks/end_states/table.py WORK results.csv
 Columns: v, L0 (nominal), start, F, W, omega, lambda1 ≤ lambda2 ≤ lambda3 (inertia eigenvalues), rigid fraction,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Convergence of the Chebyshev collocation solver for the rotating axisymmetric equilibria in the number N of
 // collocation intervals (the shapes of the reference table: A = 4π, Be = 1, v = 0.75, Be ω² ∈ {0, 4}), and the
 // predicted equilibria for the seed runs (spheroids [0.61, 0.61, 2.02] and [1.27, 1.27, 0.47] rotating at

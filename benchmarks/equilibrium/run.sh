@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Convergence of the rotating axisymmetric equilibrium solver in the number N of Chebyshev
 # collocation intervals, the reproduction of the reference table, and the predicted equilibria of the seed runs.
 #

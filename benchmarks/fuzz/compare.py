@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Before/after comparison of the parameter fuzzer (see README.md here, section "Before and after").
 
 Reads results.csv (the cases measured with the current code) and before_after.csv (the same cases replayed with

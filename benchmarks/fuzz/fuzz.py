@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Parameter fuzzer of fluid_surface (see README.md in this directory).
 
 For every entry that `fluid_surface --print-parameters` lists, boundary and hostile values are derived from its

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Parameter fuzzer: every entry of `fluid_surface --print-parameters` with boundary and hostile values derived
 # from its pattern, on short coarse runs of each scene and on --equilibrium (see README.md here).
 #   benchmarks/fuzz/run.sh [--quick] [--only SUBSTRING] [--timeout SECONDS]     (from the repository root)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Work-precision benchmark of the surface geometry: for the prolate [0.61, 0.61, 2.02] and oblate
 // [1.27, 1.27, 0.47] spheroids and geometry degree k = 1, 2, 3, the relative errors of the area,
 // the enclosed volume and the Willmore energy ½∫H² (weak curvature, SurfaceGeometry::willmore_energy())

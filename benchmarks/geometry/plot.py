@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Plots benchmarks/geometry/results.csv: relative error against position DoFs (left) and against
 wall time (right), log-log, one line per geometry degree k (colour) and quantity (line style);
 prolate spheroid in the top row, oblate in the bottom row.

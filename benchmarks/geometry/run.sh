@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Work-precision benchmark of the surface geometry. Run from the repository root:
 #   benchmarks/geometry/run.sh [--quick]
 # Builds the driver in benchmarks/geometry/build (Release, JOBS=${JOBS:-1} compile jobs), runs it, writes

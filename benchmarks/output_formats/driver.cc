@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Writes one surface N times through OutputWriter::write and prints the wall time of each write and the
 // bytes on disk of each output step:
 //   output_formats_driver WRITES [section/entry=value ...]

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/output_formats: median write time and bytes per output step, VTU against HDF5 → output_formats.png;
 prints the README table."""
 import csv

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Output formats: wall time of one output step (OutputWriter::write: build_patches with curved sub-cells, then the
 # file and the time series) and its bytes on disk, VTU (.vtu + its share of solution.pvd) against HDF5 (.h5 + its
 # share of solution.xdmf), on the ellipsoid [0.61, 0.61, 2.02] (Q2 geometry, 2×2 sub-cells per cell, 14 field

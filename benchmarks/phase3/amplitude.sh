@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/phase3/amplitude.sh: when does the rotational symmetry break, against the amplitude of the seeded
 # shape perturbation? prm/prolate.prm and prm/oblate.prm with `initial state/shape perturbation` = ε.
 #   benchmarks/phase3/amplitude.sh [--quick]        from the repository root, after building

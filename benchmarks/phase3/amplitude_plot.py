@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """amplitude.csv and amplitude.png from the cases of amplitude.sh: python3 amplitude_plot.py DIR CSV PNG."""
 import glob
 import os

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """The end state of a run from its statistics file (python3 end_state.py STATISTICS): F, bending energy W, ω, the
 inertia eigenvalues, rigid fraction, the angle between the rotation vector Ω = I⁻¹L and L (zero iff Ω is a
 principal axis), the inertia I_Ω = |L|²/(L·Ω) about it, and the identity of a rigid rotation about the axis of

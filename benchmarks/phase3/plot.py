@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """phase3.png: F, mesh quality, τ and the drifts against t for every case of benchmarks/phase3 (python3 plot.py DIR OUT)."""
 import glob
 import os

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/phase3: the perturbed rotating oblate of prm/oblate.prm through its symmetry breaking (the paper's
 # phase 3), with the mesh law `bgn` (the earlier default) and `reference`, at refinements 3 and 4.
 #   benchmarks/phase3/run.sh [--quick]        from the repository root, after building

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/phase3/snapshots.sh: the seed's panel [A] (snapshots before, during and after the symmetry breaking
 # and the end state) and an animation of a run, from its VTU output (doc/scripts/render_snapshots.py, ParaView's
 # pvpython under xvfb-run; ffmpeg).

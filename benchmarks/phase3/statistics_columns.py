@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """The columns of a fluid_surface `statistics` file (`# N: name` headers) as a dict name -> list of floats."""
 
 

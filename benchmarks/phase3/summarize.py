@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """One results.csv row from a statistics file: python3 summarize.py STATISTICS NAME EXIT WALL MESSAGE."""
 import statistics
 import sys

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Render u·ν (velocity dot the output's normal field) with the mesh edges at the last time of a run.
 
     xvfb-run -a -s "-screen 0 1280x1024x24" pvpython benchmarks/prolate/normal_velocity.py RESULTS/solution.pvd out.png

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/prolate: ω(t) of every case, and the error of ⟨ω⟩[5, 10] and F(10) against wall time, relative to the
 rotating equilibrium at the run's initial angular momentum (results.csv, cases/*.statistics) → prolate.png; prints the
 README table."""

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # The seed's rotating prolate to t = 10 at several (h, τ): wall time, ⟨ω⟩ over [5, 10], F(10), drifts, step cost.
 # Run from the repository root after building (./build/fluid_surface):
 #   [REPEAT=n] benchmarks/prolate/run.sh [--quick] [CASE ...]   CASE = refinement:τ_max (default: 2:0.05 3:0.05 3:0.025 4:0.05)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Restart stress test: a short scene-full run (rotating prolate, refinement 2, a checkpoint after every
 # step) is killed with SIGKILL at random moments several times per trial and resumed each time
 # (resume = auto) until it completes; its statistics, summary and solution.pvd must equal those of an

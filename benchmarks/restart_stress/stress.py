@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Kills a fluid_surface run with SIGKILL at random moments, resumes it, and compares the results."""
 import argparse, csv, glob, os, random, shutil, signal, subprocess, sys, tempfile, time
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """rotating_modes.png: the measured growth rate of each seeded mode against τ, per scheme and frame, beside the
 linearized rate σ and the one-mode prediction.
 

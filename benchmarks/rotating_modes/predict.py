@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Predicted measured growth rate of a seeded mode lambda = sigma + i*nu_seen under backward Euler and constant-step
 BDF2 (issue #33), stdlib only.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/rotating_modes (issue 33): the growth rate of a seeded azimuthal mode of a rotating equilibrium, measured
 # in full nonlinear runs at a fixed τ, for the old step (the lab frame) and the co-rotating step
 # (`time stepping/frame = Tisserand`), backward Euler and BDF2, against the linearized rate σ of scene stability and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """results.csv of benchmarks/rotating_modes: one row per seeded run, the measured growth rate beside the linearized
 rate σ (scene stability, benchmarks/spectrum/linearized.csv; extrapolated to τ → 0 from τ = 0.02 and 0.01 where both
 exist, second order) and the one-mode prediction ln|z(λτ)|/τ of predict.py with λ = σ + iν_seen.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Growth rate and frequency of one azimuthal wavenumber from a seeded run's `statistics` (the columns
 `mode <m> <parity> amplitude` and `… phase` of diagnostics/azimuthal modes).
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/spectrum: the first route of issue 23, scene stability (prm/stability_<shape>.prm): the leading
 # eigenvalues of the rotating equilibria by azimuthal wavenumber and parity from Arnoldi on the linearized time-T
 # map, over refinements, time steps and Reynolds numbers; each run's spectrum.csv is collected into

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/spectrum: |Q_m| of the seeded runs (less the unperturbed run's) against t, one panel per shape, with
 the fitted growth on its window. Arguments: the work folder, the output png, the shapes."""
 import math

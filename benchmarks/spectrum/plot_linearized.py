@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/spectrum: the leading growth rates of scene stability (linearized.csv) against the seeded nonlinear
 runs (seeded_modes.csv), and σ(Re).
     /usr/bin/python3 benchmarks/spectrum/plot_linearized.py linearized.csv seeded_modes.csv spectrum.png

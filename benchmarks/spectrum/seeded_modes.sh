@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/spectrum: growth rates and frequencies of the rotating equilibria by azimuthal wavenumber, from seeded
 # runs of the full nonlinear model (issue 23, the second route): prm/seeded_mode_<shape>.prm with one mode h_m
 # (m = 1..4, even and odd) at amplitude 1e-5, the moment Q_m, less that of an unperturbed run from the same

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/stability: F(t) and τ(t) of every case (cases/*.statistics) → stability.png; prints the README table."""
 import csv, glob
 import matplotlib

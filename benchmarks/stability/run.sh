@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Stability stress tests of scene full. Run from the repository root after building:
 #   benchmarks/stability/run.sh [--quick] [PART ...]     PART = fixed | perturbed | elongated (default: all)
 # fixed:     the rotating prolate (prm/prolate.prm) with a fixed τ (adaptive = false: a step whose energy rise

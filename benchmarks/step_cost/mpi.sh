@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/step_cost/mpi.sh NP: one window of the oblate's transformation at refinement 4 on NP MPI ranks, for
 # `farm-bench --vs` (one rank against two). prm/oblate.prm as shipped, resumed from a checkpoint at t = 4.75 (made
 # once by benchmarks/step_limit/run.sh, CASES=oblate:4) to t = 5.0; the checkpoint is copied for each run, so every

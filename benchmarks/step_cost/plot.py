@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/step_cost: stacked wall time per step by section (median of the runs in results.csv) → step_cost.png;
 prints the README table."""
 import sys, csv, statistics

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Cost of one step of scene full: wall time per step and its split (assembly, factorization, linear solve,
 # curvature and energy, diagnostics, output) with the MUMPS factorization refactorized every step
 # (`linear solver/reuse factorization = false`, the previous behaviour) and reused as the GMRES preconditioner.

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # The LU's symbolic analysis kept across factorizations (AmesosFactorization): cost of a step before and after.
 # The oblate of prm/oblate.prm for t ∈ [0, T] (T = 0.06: 3–4 steps, τ from 0.01 growing to 0.05; --quick: 0.02,
 # refinement 3 only), refinements 3 and 4, `reuse factorization` as shipped, 3 repetitions, the two executables run

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/step_limit/adaptive.sh: the same windows as run.sh (from its start checkpoints, which must exist), with
 # adaptive τ: today's default (lagged step, τ grown by the growth factor, the energy check) against the implicit
 # geometry with the step from the local error estimate at several tolerances. A row per run in adaptive.csv:

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/step_limit/growth.sh: does a step scheme keep the growth rate of the oblate's symmetry breaking?
 # prm/oblate.prm at refinement 3 to t = 2.6 with the maximum time step τ (adaptive otherwise: the step reaches τ by
 # t ≈ 1), for each scheme of run.sh; σ is the growth rate of the symmetry deviation e(λ) over t ∈ [1.5, 2.5]

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/step_limit: completed (stable) and failed fixed-τ windows against τ, per case and scheme."""
 import csv
 import sys

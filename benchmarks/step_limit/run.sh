@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/step_limit: the largest fixed τ at which the step stays stable inside the fast shape change (the
 # symmetry-breaking transformation) of the seed's prolate and oblate, for the lagged step and the step with
 # implicit geometry (subsection geometry iteration).

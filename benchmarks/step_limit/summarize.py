@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """One row of benchmarks/step_limit/results.csv from a case's statistics (the rows after the start time t0)."""
 import sys
 

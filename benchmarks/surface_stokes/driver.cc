@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Runs one fixed-surface problem: `surface_stokes_driver [section/entry=value ...]` with the
 // defaults of every component, prints one `key: value` line per result (for run.sh).
 #include <deal.II/base/conditional_ostream.h>

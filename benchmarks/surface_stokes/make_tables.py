@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Prints the README tables (markdown) from results.csv: /usr/bin/python3 make_tables.py [results.csv]."""
 import csv, math, os, sys
 

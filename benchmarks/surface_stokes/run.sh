@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Surface Stokes / Navier–Stokes on a fixed surface: convergence, dynamics and work–precision.
 # Usage (from the repository root): benchmarks/surface_stokes/run.sh [--quick] [--solvers] [--multiplier]
 #   --solvers re-runs only the solver comparisons and keeps the accuracy rows of results.csv;

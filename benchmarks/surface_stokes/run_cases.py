@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Runs the surface Stokes benchmark cases through the driver; writes results.csv and the PNG.
 Called by run.sh: run_cases.py DRIVER OUTDIR [--quick] [--solvers] [--multiplier].
 --solvers re-runs only the solver comparisons (sections 2, 2a, 2b, 6) and keeps the other rows of the

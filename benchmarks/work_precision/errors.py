@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/work_precision: errors of each variant against the reference run. Arguments: the work folder, the
 end time, the reference's variant name, the variant names (the reference among them). One CSV row per variant."""
 import os

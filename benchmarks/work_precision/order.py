@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/work_precision/order.sh: the largest errors of each fixed-τ run on the times t0 + 0.1 k of its window
 against the reference run, the measured orders between successive τ, and the plot order.png.
 Arguments: the work folder, the window t0 t1, the reference run and the runs <scheme>_<τ>."""

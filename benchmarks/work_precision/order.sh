@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/work_precision/order.sh: the temporal order of the full model's step, measured. prm/oblate.prm is run
 # to t0 = 1 (past the initial relaxation, whose fast bending waves no τ here resolves); from its checkpoint each
 # scheme runs the window [1, 1.8] at fixed τ (adaptive = false; the geometry iterated once, N_g = 1, ε_g = 0, so

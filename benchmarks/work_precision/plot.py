@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/work_precision: the errors of results.csv against wall time, one panel per quantity."""
 import csv
 import sys

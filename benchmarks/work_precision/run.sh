@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/work_precision: run time against error of the full model, prm/oblate.prm at refinement 3 to t = 7.
 # Each variant (a time-step setting of a scheme) runs once; its errors in F(t), ω(t) and e(λ)(t) on the grid
 # t = 0.25, 0.5, …, 7 and in t_sym_1e-2 are measured against a reference run (REFERENCE, default bdf2_0.0025: BDF2

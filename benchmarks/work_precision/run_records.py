@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """What the work–precision scripts read of a run: its summary and its statistics interpolated in time."""
 import os
 import sys

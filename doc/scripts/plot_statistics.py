@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Plot the diagnostics of a fluid_surface run as panels [B]-[F] of the seed's
 Figures 1-2 (Nestler & Voigt, section 3) in one PNG.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Render snapshots of a fluid_surface run as in panel [A] of the seed's
 Figures 1-2 (Nestler & Voigt, section 3): the surface, its three principal
 slices (planes x, y, z = const through the centre of the surface) as black

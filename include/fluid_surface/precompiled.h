@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Precompiled header: the deal.II headers every translation unit of the library uses.
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature_lib.h>

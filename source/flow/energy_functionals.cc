@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/fe/fe_values.h>
 
 #include <fluid_surface/flow/energy_functionals.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <fluid_surface/flow/flow_point_values.h>
 #include <fluid_surface/geometry/surface_operators.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <fluid_surface/flow/surface_fluid.h>
 #include <fluid_surface/io/parameter_file.h>
 

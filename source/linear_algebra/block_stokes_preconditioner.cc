@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/array_view.h>
 
 #include <fluid_surface/linear_algebra/bordered_system.h>

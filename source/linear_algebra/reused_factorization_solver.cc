@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/patterns.h>
 #include <deal.II/lac/solver_gmres.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <fluid_surface/io/run_stopped.h>
 #include <fluid_surface/model/bordered_solver.h>
 

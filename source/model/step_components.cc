@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <fluid_surface/model/step_components.h>
 
 namespace FluidSurface

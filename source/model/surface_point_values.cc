@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <fluid_surface/geometry/surface_operators.h>
 #include <fluid_surface/model/dof_layout.h>
 #include <fluid_surface/model/surface_point_values.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/vector.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <fluid_surface/io/checkpoint.h>
 #include <fluid_surface/model/rigid_motion.h>
 #include <fluid_surface/model/step_system.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/point.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <fluid_surface/geometry/exact_geometry.h>
 #include <fluid_surface/reference/equilibrium_continuation.h>
 

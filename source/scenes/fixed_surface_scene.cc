@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/timer.h>
 #include <deal.II/numerics/data_postprocessor.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <fluid_surface/scenes/geometry_scene.h>
 
 #include <iomanip>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef fluid_surface_scenes_fixed_surface_scene_h
 #define fluid_surface_scenes_fixed_surface_scene_h
 
