@@ -26,7 +26,6 @@ namespace FluidSurface
   namespace fs = std::filesystem;
 
   // ------------------------------------------------------------------ CheckpointData
-
   namespace
   {
     /// %a: the exact binary value as text (strtod reads it back, including inf and nan).
