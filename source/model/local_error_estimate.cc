@@ -68,10 +68,7 @@ namespace FluidSurface
     normal_speed_step = 0;
     if (!on_ || !data.has("model/normal speed step"))
       return;
-    VectorType x;
-    data.get_fields("normal speed", system.dof_handler(), {&x});
-    normal_speed      = system.ghosted_vector();
-    normal_speed      = x;
+    normal_speed      = system.read_field(data, "normal speed");
     normal_speed_step = data.get_double("model/normal speed step");
   }
 } // namespace FluidSurface

@@ -4,6 +4,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
+#include <fluid_surface/io/checkpoint.h>
 #include <fluid_surface/model/local_system.h>
 #include <fluid_surface/model/rigid_motion.h>
 #include <fluid_surface/model/step_system.h>
@@ -59,6 +60,16 @@ namespace FluidSurface
   StepSystem::ghosted_vector() const
   {
     return VectorType(owned, relevant, surface.get_communicator());
+  }
+
+  VectorType
+  StepSystem::read_field(const CheckpointData &data, const std::string &name) const
+  {
+    VectorType x;
+    data.get_fields(name, dofs, {&x});
+    VectorType field = ghosted_vector();
+    field            = x;
+    return field;
   }
 
   void

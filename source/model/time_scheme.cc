@@ -87,10 +87,7 @@ namespace FluidSurface
     previous_step = 0;
     if (!data.has("model/previous step"))
       return;
-    VectorType x;
-    data.get_fields("previous state", system.dof_handler(), {&x});
-    previous_solution = system.ghosted_vector();
-    previous_solution = x;
+    previous_solution = system.read_field(data, "previous state");
     previous_step     = data.get_double("model/previous step");
   }
 } // namespace FluidSurface

@@ -12,11 +12,13 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
 namespace FluidSurface
 {
+  class CheckpointData;
   class RigidMotion;
   struct LocalSystem;
 
@@ -82,6 +84,9 @@ namespace FluidSurface
     /// A vector of the flow DoFs with the ghost entries.
     VectorType
     ghosted_vector() const;
+    /// The flow-numbered field @p name of a checkpoint (written on any number of ranks), ghosted.
+    VectorType
+    read_field(const CheckpointData &data, const std::string &name) const;
 
     /// The step matrix.
     dealii::TrilinosWrappers::SparseMatrix &
