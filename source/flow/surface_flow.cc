@@ -103,9 +103,7 @@ namespace FluidSurface
   void
   SurfaceFlow::Parameters::parse(ParameterHandler &prm, const SurfaceFluid &fluid)
   {
-    Re         = fluid.Re;
-    inertia    = fluid.inertia;
-    convection = fluid.convection;
+    this->fluid = fluid;
     prm.enter_subsection("fixed surface solver");
     time_scheme = prm.get("time scheme") == "BDF1" ? TimeScheme::bdf1 : TimeScheme::bdf2;
     const std::string normal = prm.get("penalty normal");
@@ -166,9 +164,6 @@ namespace FluidSurface
     , flow_dofs(geometry.triangulation())
     , linear_solver("Amesos_Klu", parameters.linear_solver) // `direct solver = default` of this scene
   {
-    fluid.Re         = parameters.Re;
-    fluid.inertia    = parameters.inertia;
-    fluid.convection = parameters.convection;
     index_lor_subcells();
   }
 
@@ -212,7 +207,7 @@ namespace FluidSurface
   SurfaceFlow::description() const
   {
     std::ostringstream out;
-    out << "Taylor–Hood [Q2]³×Q1, " << n_u << " + " << n_p << " DoFs, Re = " << parameters.Re << ", "
+    out << "Taylor–Hood [Q2]³×Q1, " << n_u << " + " << n_p << " DoFs, Re = " << parameters.fluid.Re << ", "
         << (with_time_derivative ? (parameters.time_scheme == TimeScheme::bdf1 ? "BDF1" : "BDF2") : "stationary")
         << (with_convection ? " + convection" : "") << ", penalty η = " << parameters.penalty_factor
         << " h^-" << parameters.penalty_exponent << " with "

@@ -229,7 +229,7 @@ namespace FluidSurface
         for (unsigned int j = 0; j < n; ++j)
           {
             double velocity_block =
-              fluid.viscous_term(point, i, j) + penalty * scratch.normal_phi[i] * scratch.normal_phi[j];
+              parameters.fluid.viscous_term(point, i, j) + penalty * scratch.normal_phi[i] * scratch.normal_phi[j];
             if (with_time_derivative)
               velocity_block += SurfaceFluid::mass_term(point, i, j, bdf[0] / tau);
             // The skew-symmetric form ½[(∇_w u, v) − (∇_w v, u)].
@@ -329,7 +329,7 @@ namespace FluidSurface
               scratch.normal_phi[a] = SO::normal_component(point.velocity[dofs[a]], n_penalty);
             for (unsigned int a = 0; a < 12; ++a)
               for (unsigned int b = 0; b < 12; ++b)
-                cartesian(a, b) += (fluid.viscous_term(point, dofs[a], dofs[b]) +
+                cartesian(a, b) += (parameters.fluid.viscous_term(point, dofs[a], dofs[b]) +
                                     penalty * scratch.normal_phi[a] * scratch.normal_phi[b] +
                                     mass * point.velocity[dofs[a]] * point.velocity[dofs[b]]) *
                                    dA;

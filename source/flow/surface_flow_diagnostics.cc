@@ -26,7 +26,7 @@ namespace FluidSurface
   SurfaceFlow::dissipation_rate() const
   {
     return EnergyFunctionals::dissipation_rate(
-      geometry.mapping(), flow_dofs, current, geometry.quadrature(), parameters.Re, communicator);
+      geometry.mapping(), flow_dofs, current, geometry.quadrature(), parameters.fluid.Re, communicator);
   }
 
   namespace

@@ -75,7 +75,7 @@ namespace FluidSurface
     return block_preconditioner.solve(system_matrix,
                                       x,
                                       system_rhs,
-                                      1.0 / parameters.Re,
+                                      1.0 / parameters.fluid.Re,
                                       with_time_derivative ? alpha0 / current_tau : 0.0,
                                       linear_solver.get_parameters().tolerance,
                                       parameters.max_linear_iterations);

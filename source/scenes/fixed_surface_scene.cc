@@ -260,8 +260,8 @@ namespace FluidSurface
                       RealRange::closed(-100, 100),
                       "ω, |ω| ≤ 100, of the Killing field u = ω e_z × x.");
     prm.leave_subsection();
-    // `time stepping` (end time, time step) is TimeStepper's, `flow` SurfaceFluid's and `fixed surface
-    // solver` SurfaceFlow's; the Simulation declares each once.
+    // `time stepping` is TimeStepper's (this scene reads its end time and time step only), `flow`
+    // SurfaceFluid's and `fixed surface solver` SurfaceFlow's; the Simulation declares each once.
   }
 
   ParametersRead
@@ -302,20 +302,7 @@ namespace FluidSurface
     mode_number = prm.get_integer("mode number");
     omega       = prm.get_double("angular velocity");
     prm.leave_subsection();
-    prm.enter_subsection("time stepping");
-    end_time  = prm.get_double("end time");
-    time_step = prm.get_double("time step");
-    if (!is_stationary() && !(std::round(end_time / time_step) >= 1))
-      throw_invalid_entry("time stepping/end time",
-                          prm.get("end time"),
-                          "at least one time step (T ≥ τ/2, τ = " + prm.get("time step") + ") for the time-dependent "
-                          "problem " + name);
-    if (!is_stationary() && !(std::round(end_time / time_step) <= std::numeric_limits<unsigned int>::max()))
-      throw_invalid_entry("time stepping/end time",
-                          prm.get("end time"),
-                          "at most " + std::to_string(std::numeric_limits<unsigned int>::max()) +
-                            " time steps of τ = " + prm.get("time step"));
-    prm.leave_subsection();
+    steps = TimeStepper::parse_constant_steps(prm, !is_stationary(), name);
     SurfaceFluid fluid;
     fluid.parse_parameters(prm);
     flow_parameters.parse(prm, fluid);
@@ -335,7 +322,7 @@ namespace FluidSurface
                           "1 (the decaying mode's rate (l(l+1) − 2)/Re is for the unit sphere)");
     if (needs_sphere)
       semi_axes = Tensor<1, 3>({sphere_radius, sphere_radius, sphere_radius});
-    if ((problem == Problem::killing || problem == Problem::decaying_mode) && !flow_parameters.inertia)
+    if ((problem == Problem::killing || problem == Problem::decaying_mode) && !flow_parameters.fluid.inertia)
       throw_invalid_entry("flow/inertia", "false", "true for the time-dependent problem " + name);
   }
 
@@ -398,15 +385,15 @@ namespace FluidSurface
   double
   FixedSurfaceScene::decay_rate() const
   {
-    return (mode_number * (mode_number + 1.0) - 2.0) / flow_parameters.Re;
+    return (mode_number * (mode_number + 1.0) - 2.0) / flow_parameters.fluid.Re;
   }
 
   FlowField
   FixedSurfaceScene::set_up_problem(SurfaceFlow &flow) const
   {
     const Tensor<1, 3> axes = semi_axes;
-    const double       Re   = flow_parameters.Re;
-    flow.set_terms(!is_stationary(), flow_parameters.convection);
+    const double       Re   = flow_parameters.fluid.Re;
+    flow.set_terms(!is_stationary(), flow_parameters.fluid.convection);
     flow.set_exact_normal([axes](const Point<3> &x) { return exact_normal(x, axes); });
     if (is_stationary())
       {
@@ -416,7 +403,7 @@ namespace FluidSurface
       }
     flow.setup();
     return problem == Problem::killing ? killing_solution(omega) :
-                                         decaying_mode_solution(mode_number, decay_rate(), flow_parameters.convection);
+                                         decaying_mode_solution(mode_number, decay_rate(), flow_parameters.fluid.convection);
   }
 
   void
@@ -432,10 +419,11 @@ namespace FluidSurface
   FixedSurfaceScene::run_time_loop(SurfaceFlow &flow, const FlowField &exact)
   {
     flow.set_initial_velocity(exact, 0.0);
-    last_results.initial_kinetic_energy = record(flow, exact, 0, 0.0, time_step, SurfaceFlow::SolveInfo());
+    last_results.initial_kinetic_energy = record(flow, exact, 0, 0.0, steps.time_step, SurfaceFlow::SolveInfo());
     write_output(flow, 0.0);
-    const unsigned int n_steps = static_cast<unsigned int>(std::round(end_time / time_step));
-    double             time    = 0;
+    const unsigned int n_steps   = steps.n_steps;
+    const double       time_step = steps.time_step;
+    double             time      = 0;
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
         time                              = step * time_step;

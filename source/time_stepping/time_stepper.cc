@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -137,6 +138,29 @@ namespace FluidSurface
     prm.leave_subsection();
     current_time = 0;
     n_accepted = n_rejected = n_easy = 0;
+  }
+
+  TimeStepper::ConstantSteps
+  TimeStepper::parse_constant_steps(ParameterHandler &prm, const bool must_step, const std::string &problem)
+  {
+    ConstantSteps steps;
+    prm.enter_subsection("time stepping");
+    steps.end_time     = prm.get_double("end time");
+    steps.time_step    = prm.get_double("time step");
+    const double ratio = std::round(steps.end_time / steps.time_step);
+    if (must_step && !(ratio >= 1))
+      throw_invalid_entry("time stepping/end time",
+                          prm.get("end time"),
+                          "at least one time step (T ≥ τ/2, τ = " + prm.get("time step") +
+                            ") for the time-dependent problem " + problem);
+    if (must_step && !(ratio <= std::numeric_limits<unsigned int>::max()))
+      throw_invalid_entry("time stepping/end time",
+                          prm.get("end time"),
+                          "at most " + std::to_string(std::numeric_limits<unsigned int>::max()) +
+                            " time steps of τ = " + prm.get("time step"));
+    prm.leave_subsection();
+    steps.n_steps = must_step ? static_cast<unsigned int>(ratio) : 0;
+    return steps;
   }
 
   double

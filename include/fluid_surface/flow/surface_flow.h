@@ -131,10 +131,8 @@ namespace FluidSurface
      */
     struct Parameters
     {
-      // From the SurfaceFluid given to parse().
-      double Re{};         ///< Reynolds number Re
-      bool   inertia{};    ///< time derivative ∂_t u on/off
-      bool   convection{}; ///< convection ∇_w u on/off (with inertia only)
+      /// The fluid's terms and Re, as parsed once from `subsection flow` by SurfaceFluid (not re-read).
+      SurfaceFluid fluid;
 
       // `subsection fixed surface solver`, set by parse().
       TimeScheme          time_scheme{};                       ///< `time scheme`
@@ -155,7 +153,7 @@ namespace FluidSurface
       /// Declares `subsection fixed surface solver` (and the linear-solver entries of `subsection flow`).
       static void
       declare(dealii::ParameterHandler &prm);
-      /// Reads them; Re, inertia and convection come from @p fluid.
+      /// Reads them and keeps the parsed @p fluid.
       void
       parse(dealii::ParameterHandler &prm, const SurfaceFluid &fluid);
     };
@@ -248,7 +246,7 @@ namespace FluidSurface
     double
     reynolds_number() const
     {
-      return parameters.Re;
+      return parameters.fluid.Re;
     }
     /// One line naming the discretization and solver choices, for the screen.
     std::string
@@ -379,8 +377,7 @@ namespace FluidSurface
     const SurfaceGeometry &geometry;
     MPI_Comm               communicator;
 
-    Parameters   parameters;
-    SurfaceFluid fluid; ///< the terms of the flow, with parameters.Re
+    Parameters parameters;
 
     // Terms switched by the scene.
     bool with_time_derivative = false;

@@ -8,6 +8,7 @@
 #include <deal.II/base/timer.h>
 
 #include <fluid_surface/flow/surface_flow.h>
+#include <fluid_surface/time_stepping/time_stepper.h>
 #include <fluid_surface/geometry/surface_geometry.h>
 #include <fluid_surface/io/output_writer.h>
 #include <fluid_surface/io/statistics_file.h>
@@ -121,8 +122,7 @@ namespace FluidSurface
     Problem                 problem       = Problem::manufactured_sphere;
     unsigned int            mode_number   = 2;
     double                  omega         = 1.0;
-    double                  end_time      = 1.0;
-    double                  time_step     = 0.01;
+    TimeStepper::ConstantSteps steps; ///< T, τ and the number of steps (`time stepping`)
     double                  sphere_radius = 1.0;
     dealii::Tensor<1, 3>    semi_axes;
     SurfaceFlow::Parameters flow_parameters;

@@ -32,6 +32,20 @@ namespace FluidSurface
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
+    /// The constant steps of a run that reads only `end time` T and `time step` τ (scene fixed surface).
+    struct ConstantSteps
+    {
+      double       end_time  = 0; ///< T
+      double       time_step = 0; ///< τ
+      unsigned int n_steps   = 0; ///< round(T/τ)
+    };
+    /**
+     * Reads `end time` and `time step` of `subsection time stepping` (none of its adaptive entries). With
+     * @p must_step, InputError unless 1 ≤ round(T/τ) fits an unsigned int; @p problem names the run in the message.
+     */
+    static ConstantSteps
+    parse_constant_steps(dealii::ParameterHandler &prm, const bool must_step, const std::string &problem);
+
     /// The time t of the current (accepted) state.
     double
     time() const
