@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """results.csv of benchmarks/rotating_modes: one row per seeded run, the measured growth rate beside the linearized
-rate σ (scene stability, benchmarks/spectrum/linearized.csv; extrapolated to τ → 0 from τ = 0.02 and 0.01 where both
-exist, second order) and the one-mode prediction ln|z(λτ)|/τ of predict.py with λ = σ + iν_seen.
+rate σ (scene stability with the co-rotating step, benchmarks/spectrum/linearized_tisserand.csv, else the lab
+frame's benchmarks/spectrum/linearized.csv; extrapolated to τ → 0 from τ = 0.02 and 0.01 where both exist, second
+order) and the one-mode prediction ln|z(λτ)|/τ of predict.py with λ = σ + iν_seen.
 
     table.py <work directory> <run name> ...
 """
@@ -19,13 +20,17 @@ import statistics_columns  # noqa: E402
 
 def linearized(shape, refinement, m, parity):
     rows = {}
-    with open(os.path.join(here, "..", "spectrum", "linearized.csv")) as f:
-        header = f.readline().strip().split(",")
-        for line in f:
-            r = dict(zip(header, line.strip().split(",")))
-            key = (r["shape"], int(r["refinement"]), float(r["tau"]), r["Re"], int(r["m"]), r["parity"])
-            if key[3] == "1" and key not in rows:  # the first row of a case is its leading eigenvalue
-                rows[key] = (float(r["growth rate"]), float(r["frequency"]))
+    for name in ("linearized_tisserand.csv", "linearized.csv"):  # the co-rotating step's rows first
+        path = os.path.join(here, "..", "spectrum", name)
+        if not os.path.exists(path):
+            continue
+        with open(path) as f:
+            header = f.readline().strip().split(",")
+            for line in f:
+                r = dict(zip(header, line.strip().split(",")))
+                key = (r["shape"], int(r["refinement"]), float(r["tau"]), r["Re"], int(r["m"]), r["parity"])
+                if key[3] == "1" and key not in rows:  # the first row of a case is its leading eigenvalue
+                    rows[key] = (float(r["growth rate"]), float(r["frequency"]))
     coarse = rows.get((shape, refinement, 0.02, "1", m, parity))
     fine = rows.get((shape, refinement, 0.01, "1", m, parity))
     if coarse is None:

@@ -40,7 +40,7 @@ namespace FluidSurface
                       const bool         carried_frame,
                       const double       tau)
   {
-    if (previous_step == 0)
+    if (previous_step == 0 || backward_euler_steps > 0)
       return first_step.start(old_position, old_fields, system, carried, carried_frame, tau);
     // x̃^{m−1}: the previous state in the frame of the step (law reference: frame coordinates at t^m − τ_p,
     // i.e. carried forward by τ_p; otherwise the previous state itself).
@@ -70,11 +70,15 @@ namespace FluidSurface
     previous_solution = system.ghosted_vector();
     previous_solution = old_fields;
     previous_step     = tau;
+    if (backward_euler_steps > 0)
+      --backward_euler_steps;
   }
 
   void
   VariableBDF2::save(CheckpointData &data, const StepSystem &system) const
   {
+    if (backward_euler_steps > 0)
+      data.set("model/backward Euler steps", static_cast<double>(backward_euler_steps));
     if (previous_step == 0)
       return;
     data.set("model/previous step", previous_step);
@@ -85,6 +89,8 @@ namespace FluidSurface
   VariableBDF2::load(const CheckpointData &data, const StepSystem &system)
   {
     previous_step = 0;
+    backward_euler_steps =
+      data.has("model/backward Euler steps") ? static_cast<unsigned int>(data.get_double("model/backward Euler steps")) : 0;
     if (!data.has("model/previous step"))
       return;
     previous_solution = system.read_field(data, "previous state");

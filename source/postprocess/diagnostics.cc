@@ -543,10 +543,19 @@ namespace FluidSurface
     if (L0 > 0)
       angular_momentum_drift =
         std::max(angular_momentum_drift, (v.angular_momentum - initial.angular_momentum).norm() / L0);
+    // e(λ) grows exponentially between two steps: the crossing of a level is interpolated in ln e(λ).
+    const auto crossing = [&](const double level) {
+      if (!(last_deviation > 0) || !(last_deviation <= level) || !(v.symmetry_deviation > last_deviation))
+        return time;
+      return last_time + (time - last_time) * std::log(level / last_deviation) /
+                           std::log(v.symmetry_deviation / last_deviation);
+    };
     if (std::isnan(crossing_1e4) && v.symmetry_deviation > 1e-4)
-      crossing_1e4 = time;
+      crossing_1e4 = crossing(1e-4);
     if (std::isnan(crossing_1e2) && v.symmetry_deviation > 1e-2)
-      crossing_1e2 = time;
+      crossing_1e2 = crossing(1e-2);
+    last_time      = time;
+    last_deviation = v.symmetry_deviation;
     if (reference_shape && std::isfinite(v.l2_distance) && !(v.l2_distance >= min_l2_distance))
       {
         min_l2_distance = v.l2_distance;
@@ -646,6 +655,8 @@ namespace FluidSurface
     data.set("diagnostics/max angular momentum drift", angular_momentum_drift);
     data.set("diagnostics/t_sym_1e-4", crossing_1e4);
     data.set("diagnostics/t_sym_1e-2", crossing_1e2);
+    data.set("diagnostics/last time", last_time);
+    data.set("diagnostics/last symmetry deviation", last_deviation);
     data.set("diagnostics/omega integral", omega_integral);
     data.set("diagnostics/omega time", omega_time);
   }
@@ -665,6 +676,10 @@ namespace FluidSurface
     angular_momentum_drift   = data.get_double("diagnostics/max angular momentum drift");
     crossing_1e4             = data.get_double("diagnostics/t_sym_1e-4");
     crossing_1e2             = data.get_double("diagnostics/t_sym_1e-2");
+    const bool has_last      = data.has("diagnostics/last time"); // not in checkpoints before the interpolation
+    last_time                = has_last ? data.get_double("diagnostics/last time") : std::numeric_limits<double>::quiet_NaN();
+    last_deviation =
+      has_last ? data.get_double("diagnostics/last symmetry deviation") : std::numeric_limits<double>::quiet_NaN();
     omega_integral           = data.get_double("diagnostics/omega integral");
     omega_time               = data.get_double("diagnostics/omega time");
   }

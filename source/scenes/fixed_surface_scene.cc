@@ -287,7 +287,8 @@ namespace FluidSurface
              "time stepping/energy tolerance",
              "time stepping/error tolerance",
              "time stepping/scheme",
-             "time stepping/frame"}};
+             "time stepping/frame",
+             "time stepping/backward Euler steps after rejection"}};
   }
 
   void

@@ -180,6 +180,14 @@ namespace FluidSurface
             pcout << "    step rejected (" << energy.reason
                   << "); retried at the same τ with the iterated geometry" << std::endl;
           }
+        else if (model.fall_back_to_backward_euler(time.backward_euler_steps_after_rejection()))
+          {
+            model.restore_last_state();
+            time.repeat_step();
+            energy_control.forget_rejection();
+            pcout << "    step rejected (" << energy.reason << "); retried at the same τ as a backward-Euler step"
+                  << std::endl;
+          }
         else
           retry_step(tau, StepFailure::energy_rise, energy.reason, "");
         return true;

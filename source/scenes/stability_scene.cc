@@ -133,7 +133,8 @@ namespace FluidSurface
              "time stepping/growth factor",
              "time stepping/shrink factor",
              "time stepping/easy steps before growth",
-             "time stepping/energy tolerance"}};
+             "time stepping/energy tolerance",
+             "time stepping/backward Euler steps after rejection"}};
   }
 
   void

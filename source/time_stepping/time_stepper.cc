@@ -86,6 +86,14 @@ namespace FluidSurface
                       "(Ω × u, v) in the momentum balance and the mesh carried with it: a mode is damped at its "
                       "co-rotating frequency ν, not at its lab frequency ν + mΩ (doc/scheme.md, \"The co-rotating "
                       "step\"). With either scheme.");
+    prm.declare_entry("backward Euler steps after rejection",
+                      "0",
+                      Patterns::Integer(0, 1000),
+                      "K, 0 ≤ K ≤ 1000, with scheme = BDF2: a step the energy check rejects is retried at the same τ "
+                      "as a backward-Euler step (L-stable, no history), and so are the next K accepted steps; then BDF2 "
+                      "resumes with the history of the last step. A second rejection within them shrinks τ as usual. "
+                      "0: a rejected BDF2 step is retried with a smaller τ only (doc/scheme.md, \"Second order in "
+                      "time\").");
     prm.declare_entry("energy tolerance",
                       "1e-3",
                       RealRange::at_least(0),
@@ -111,6 +119,7 @@ namespace FluidSurface
     error_tolerance           = prm.get_double("error tolerance");
     scheme_kind = prm.get("scheme") == "BDF2" ? TimeScheme::Kind::bdf2 : TimeScheme::Kind::backward_euler;
     frame_kind  = prm.get("frame") == "Tisserand" ? TimeScheme::Frame::tisserand : TimeScheme::Frame::lab;
+    fallback_steps = prm.get_integer("backward Euler steps after rejection");
     if (error_tolerance > 0 && !adaptive)
       throw_invalid_entry("time stepping/error tolerance",
                           prm.get("error tolerance"),

@@ -138,6 +138,13 @@ namespace FluidSurface
     {
       return step.start_corrected_steps();
     }
+    /// After a rejected BDF2 step: the retry at the same τ and the next @p steps are backward Euler
+    /// (SurfaceStep::fall_back_to_backward_euler()). Returns whether it started them.
+    bool
+    fall_back_to_backward_euler(const unsigned int steps)
+    {
+      return step.fall_back_to_backward_euler(steps);
+    }
 
     /**
      * Replaces the reference surface S₀ of the mesh law `reference` (set by setup() to the initial surface) by

@@ -165,6 +165,13 @@ namespace FluidSurface
     {
       return corrected_steps.start_after_rejection(parts.geometry_iteration);
     }
+    /// After a rejected BDF2 step: the retry and the next @p steps accepted steps are backward Euler
+    /// (`time stepping/backward Euler steps after rejection`). Returns whether it started them.
+    bool
+    fall_back_to_backward_euler(const unsigned int steps)
+    {
+      return steps > 0 && time_scheme->fall_back_to_backward_euler(steps);
+    }
     /// The step was accepted (called before the state moves on): the histories of the time scheme, the error
     /// estimate, the corrected steps and the membrane pull move on.
     void

@@ -83,6 +83,13 @@ namespace FluidSurface
     virtual void
     forget_history()
     {}
+    /// After a rejected step: the retry and the next @p steps accepted steps are backward-Euler steps (BDF2; the
+    /// others are backward Euler already). Returns whether it started them (not if they are under way).
+    virtual bool
+    fall_back_to_backward_euler(const unsigned int)
+    {
+      return false;
+    }
     /// Writes the history into a checkpoint. Collective.
     virtual void
     save(CheckpointData &, const StepSystem &) const
@@ -145,6 +152,11 @@ namespace FluidSurface
     {
       scheme->forget_history();
     }
+    bool
+    fall_back_to_backward_euler(const unsigned int steps) override
+    {
+      return scheme->fall_back_to_backward_euler(steps);
+    }
     void
     save(CheckpointData &data, const StepSystem &system) const override
     {
@@ -183,6 +195,14 @@ namespace FluidSurface
     {
       previous_step = 0;
     }
+    bool
+    fall_back_to_backward_euler(const unsigned int steps) override
+    {
+      if (backward_euler_steps > 0)
+        return false;
+      backward_euler_steps = steps + 1; // the retry and the next `steps`
+      return true;
+    }
     void
     save(CheckpointData &data, const StepSystem &system) const override;
     void
@@ -193,6 +213,8 @@ namespace FluidSurface
     /// x^{m−1} (flow numbering, ghosted) and the step τ_p that followed it; τ_p = 0: none.
     VectorType previous_solution;
     double     previous_step = 0;
+    /// Steps left that are taken as backward-Euler steps after a rejection (fall_back_to_backward_euler()).
+    unsigned int backward_euler_steps = 0;
     /// x̂ and u* of the step under way, ghosted; X̂ in the geometry numbering.
     VectorType start_fields, lagged_fields, start_position;
   };

@@ -174,6 +174,9 @@ namespace FluidSurface
     double area_drift = 0, volume_drift = 0, angular_momentum_drift = 0;
     double crossing_1e4 = std::numeric_limits<double>::quiet_NaN();
     double crossing_1e2 = std::numeric_limits<double>::quiet_NaN();
+    /// t and e(λ) of the last recorded step: a crossing is interpolated in ln e(λ) between it and the next.
+    double last_time      = std::numeric_limits<double>::quiet_NaN();
+    double last_deviation = std::numeric_limits<double>::quiet_NaN();
     double omega_integral = 0, omega_time = 0;
 
     std::string  reference_equilibrium = "none"; ///< `reference equilibrium`: none, prolate or oblate

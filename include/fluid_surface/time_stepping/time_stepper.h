@@ -119,6 +119,12 @@ namespace FluidSurface
     {
       return frame_kind;
     }
+    /// K of `backward Euler steps after rejection` (BDF2 only; 0: off).
+    unsigned int
+    backward_euler_steps_after_rejection() const
+    {
+      return fallback_steps;
+    }
     /// ε_t of `error tolerance`.
     double
     error_bound() const
@@ -194,6 +200,7 @@ namespace FluidSurface
     unsigned int easy_steps;
     double       relative_energy_tolerance;
     double       error_tolerance = 0; ///< ε_t; 0: no error control
+    unsigned int fallback_steps  = 0; ///< K of `backward Euler steps after rejection`
     TimeScheme::Kind  scheme_kind = TimeScheme::Kind::backward_euler; ///< `scheme`
     TimeScheme::Frame frame_kind  = TimeScheme::Frame::lab;           ///< `frame`
     bool         adaptive;
