@@ -9,7 +9,8 @@
 #     --quick: prm/oblate.prm at refinement 2 to t = 2, τ_max = 0.1 and 0.025
 # Environment: SHAPE (oblate | prolate, default oblate), REFINEMENT (default 3), TAUS (default "0.1 0.05 0.025
 # 0.0125"), EXTRA (prm lines appended to every run, e.g. another scheme), TAG (a name for that variant), WORK, EXE.
-# A run is resumed from its checkpoint (`checkpoint/resume = auto`), so a script cut off goes on where it stopped.
+# A run is resumed from its checkpoint (`checkpoint/resume = auto`), so a script cut off goes on where it stopped;
+# a run whose committed summary (shipped/<run>.summary) says completed is not rerun unless FORCE=1.
 set -u
 cd "$(dirname "$0")/../.."
 here=benchmarks/work_precision
@@ -35,9 +36,12 @@ for tau in $taus; do
     echo "  set screen interval = 100000"; echo "end"
     printf '%b\n' "${EXTRA:-}"
   } > "$work/$name.prm"
-  if ! grep -q '^status: completed' "$work/$name/summary" 2>/dev/null; then
+  if grep -q '^status: completed' "$work/$name/summary" 2>/dev/null; then echo "$name: completed before"
+  elif [ -z "${FORCE:-}" ] && grep -q '^status: completed' "$out/$name.summary" 2>/dev/null; then
+    echo "$name: its committed summary is kept (FORCE=1 reruns it)"
+  else
     "$exe" "$work/$name.prm" > "$work/$name.log" 2>&1; echo "$name: exit $?"
-  else echo "$name: completed before"; fi
+  fi
   [ -f "$work/$name/summary" ] && cp "$work/$name/summary" "$out/$name.summary"
   names="$names $name"
 done
