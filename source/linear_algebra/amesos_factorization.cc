@@ -155,4 +155,20 @@ namespace FluidSurface
     const int ierr = solver->Solve();
     AssertThrow(ierr == 0, ExcTrilinosError(ierr));
   }
+
+  void
+  AmesosFactorization::solve(TrilinosWrappers::MPI::Vector       &dst,
+                             const TrilinosWrappers::MPI::Vector &src,
+                             const ChangeOfVariables             *change)
+  {
+    if (change == nullptr)
+      {
+        solve(dst, src);
+        return;
+      }
+    TrilinosWrappers::MPI::Vector transformed(src);
+    (*change)(transformed, true);
+    solve(dst, transformed);
+    (*change)(dst, false);
+  }
 } // namespace FluidSurface

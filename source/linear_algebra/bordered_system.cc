@@ -92,16 +92,18 @@ namespace FluidSurface
   {}
 
   void
-  BorderedFactorizationPreconditioner::initialize(AmesosFactorization &factors)
+  BorderedFactorizationPreconditioner::initialize(AmesosFactorization                          &factors,
+                                                  const AmesosFactorization::ChangeOfVariables *change_of_variables)
   {
     factorization      = &factors;
+    change             = change_of_variables;
     const unsigned int n = system.columns.size();
     z.resize(n);
     schur_inverse.reinit(n, n);
     for (unsigned int k = 0; k < n; ++k)
       {
         z[k].reinit(*system.columns[k], true);
-        factorization->solve(z[k], *system.columns[k]);
+        factorization->solve(z[k], *system.columns[k], change);
       }
     for (unsigned int j = 0; j < n; ++j)
       for (unsigned int k = 0; k < n; ++k)
@@ -131,7 +133,7 @@ namespace FluidSurface
                                              const BorderedSystem::BlockVector &src) const
   {
     Assert(factorization != nullptr, ExcNotInitialized());
-    factorization->solve(dst.block(0), src.block(0));
+    factorization->solve(dst.block(0), src.block(0), change);
     const std::vector<double> mu = schur_solve(dst.block(0), BorderedSystem::multipliers(src));
     for (unsigned int k = 0; k < z.size(); ++k)
       dst.block(0).add(-mu[k], z[k]);

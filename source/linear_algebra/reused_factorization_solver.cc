@@ -109,6 +109,7 @@ namespace FluidSurface
         factorization   = std::make_unique<AmesosFactorization>(options);
       }
     factorization->factorize(matrix, step_timer);
+    change_of_variables       = nullptr;
     factors_of_current_matrix = true;
     factorization_requested   = false;
     ++factorization_count;
@@ -125,7 +126,7 @@ namespace FluidSurface
     std::optional<TimerOutput::Scope> section;
     if (step_timer)
       section.emplace(*step_timer, "linear solve");
-    preconditioner.initialize(*factorization);
+    preconditioner.initialize(*factorization, change_of_variables ? &change_of_variables : nullptr);
     // Right preconditioning: GMRES measures the true residual ‖b − Kx‖. A basis of max_reuse_iterations
     // vectors: the solve is abandoned before GMRES would restart.
     SolverControl control(parameters.max_reuse_iterations, parameters.tolerance * b.l2_norm());

@@ -46,10 +46,20 @@ namespace FluidSurface
     try
       {
         linear_solver.matrix_changed(); // every step assembles its matrix on the new surface
+        const dealii::Tensor<2, 3> identity = dealii::unit_symmetric_tensor<3>();
+        if (&linear_solver == &kept && rotation_since_factorization != identity)
+          kept.set_change_of_variables([this, &step_system](VectorType &v, const bool transpose) {
+            step_system.rotate_vector_unknowns(
+              transpose ? dealii::transpose(rotation_since_factorization) : rotation_since_factorization, v);
+          });
+        else if (&linear_solver == &kept)
+          kept.set_change_of_variables(nullptr);
         BorderedFactorizationPreconditioner     preconditioner(system);
         const ReusedFactorizationSolver::Result result =
           linear_solver.solve(step_system.matrix(), system, solution, rhs, preconditioner);
         preconditioner.enforce_constraints(solution, BorderedSystem::multipliers(rhs));
+        if (result.factorized && &linear_solver == &kept)
+          rotation_since_factorization = identity;
         outcome.iterations  = result.iterations;
         outcome.factorized  = result.factorized;
         last_solution       = solution;

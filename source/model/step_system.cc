@@ -248,18 +248,31 @@ namespace FluidSurface
   }
 
   void
+  StepSystem::turn_nodes(const std::vector<Node> &nodes, const Tensor<2, 3> &rotation, VectorType &v)
+  {
+    for (const auto &node : nodes)
+      {
+        Tensor<1, 3> x;
+        for (unsigned int d = 0; d < 3; ++d)
+          x[d] = v[node[d]];
+        x = rotation * x;
+        for (unsigned int d = 0; d < 3; ++d)
+          v[node[d]] = x[d];
+      }
+  }
+
+  void
+  StepSystem::rotate_vector_unknowns(const Tensor<2, 3> &rotation, VectorType &v) const
+  {
+    turn_nodes(velocity_nodes, rotation, v);
+    turn_nodes(position_nodes, rotation, v);
+    v.compress(VectorOperation::insert);
+  }
+
+  void
   StepSystem::carry_fields(const RigidMotion &carried, const double tau, VectorType &solution) const
   {
-    const Tensor<2, 3> Q = carried.rotation_over(tau);
-    for (const auto &node : velocity_nodes)
-      {
-        Tensor<1, 3> u;
-        for (unsigned int d = 0; d < 3; ++d)
-          u[d] = solution[node[d]];
-        u = Q * u;
-        for (unsigned int d = 0; d < 3; ++d)
-          solution[node[d]] = u[d];
-      }
+    turn_nodes(velocity_nodes, carried.rotation_over(tau), solution);
     for (const auto &node : position_nodes)
       {
         Point<3> y;

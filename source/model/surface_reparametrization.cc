@@ -299,6 +299,32 @@ namespace FluidSurface
     return failure;
   }
 
+  std::string
+  SurfaceReparametrization::project_velocity(SurfaceStep       &step,
+                                             SurfaceState      &accepted,
+                                             const StepRequest &run_request) const
+  {
+    SurfaceGeometry              &geometry     = step.moved_geometry();
+    const ConservationProjection &conservation = step.components().conservation;
+    StepRequest                   projection_request = run_request;
+    projection_request.solver                        = StepRequest::Solver::fresh_klu;
+    const SurfaceStep::Result projection = step.advance(projection_request, projection_time_step);
+    if (!projection.solved)
+      return projection.message;
+    VectorType state(step.dof_handler().locally_owned_dofs(), geometry.get_communicator());
+    state = step.candidate();
+    step.copy_position_into(accepted.position, state);
+    VectorType position(geometry.locally_owned_dofs(), geometry.get_communicator());
+    position = accepted.position;
+    geometry.set_position(position);
+    if (conservation.enabled && step.components().flow.conserve_momenta)
+      conservation.project_momenta(geometry, step.dof_handler(), accepted.rigid_targets, state);
+    accepted.solution = state;
+    step.solver().forget_last_solution();
+    step.solver().request_factorization();
+    return "";
+  }
+
   SurfaceReparametrization::Result
   SurfaceReparametrization::reparametrize(SurfaceStep                   &step,
                                           SurfaceState                  &accepted,
@@ -366,21 +392,9 @@ namespace FluidSurface
     // The velocity back onto the discrete constraints: a step of the scheme in the limit τ → 0.
     if (flow.inertia && run_request.prescribed_velocity() == nullptr)
       {
-        StepRequest projection_request = run_request;
-        projection_request.solver      = StepRequest::Solver::fresh_klu;
-        const SurfaceStep::Result projection = step.advance(projection_request, projection_time_step);
-        if (!projection.solved)
-          return restore("the projection of the velocity failed: " + projection.message);
-        state = step.candidate();
-        step.copy_position_into(accepted.position, state);
-        VectorType position(geometry.locally_owned_dofs(), comm);
-        position = accepted.position;
-        geometry.set_position(position);
-        if (conservation.enabled && flow.conserve_momenta)
-          conservation.project_momenta(geometry, dofs, accepted.rigid_targets, state);
-        accepted.solution = state;
-        step.solver().forget_last_solution();
-        step.solver().request_factorization();
+        const std::string projection_failure = project_velocity(step, accepted, run_request);
+        if (!projection_failure.empty())
+          return restore("the projection of the velocity failed: " + projection_failure);
       }
 
     result.quality_after = geometry.measure().mesh_quality;

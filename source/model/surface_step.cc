@@ -127,6 +127,7 @@ namespace FluidSurface
     membrane_pull.accept();
     time_scheme->accept(state.solution, system, last_tau);
     error_estimate.accept(system, last_tau);
+    bordered_solver.turn_kept_factors(candidate_rotation);
   }
 
   void
@@ -363,8 +364,9 @@ namespace FluidSurface
             conservation.project_momenta(geometry, system.dof_handler(), state.rigid_targets, projected);
         candidate_solution = projected;
       }
-    last_tau      = step.tau;
-    result.solved = true;
+    last_tau           = step.tau;
+    candidate_rotation = step.co_rotating ? step.motion.rotation_over(step.tau) : unit_symmetric_tensor<3>();
+    result.solved      = true;
   }
 
   SurfaceStep::Result

@@ -70,7 +70,11 @@ namespace FluidSurface
       throw_invalid_entry("diagnostics/angular velocity window",
                           prm.get("angular velocity window"),
                           "t₀ < t₁");
-    reference_equilibrium = prm.get("reference equilibrium");
+    const std::string branch = prm.get("reference equilibrium");
+    reference_equilibrium.reset();
+    if (branch != "none")
+      reference_equilibrium =
+        branch == "oblate" ? AxisymmetricEquilibrium::Branch::oblate : AxisymmetricEquilibrium::Branch::prolate;
     section_angles        = prm.get_integer("section angles");
     azimuthal_modes.clear();
     for (const auto &m : Utilities::split_string_list(prm.get("azimuthal modes")))
@@ -341,13 +345,14 @@ namespace FluidSurface
   Diagnostics::set_reference(const Values &initial_values, const double bending_number, std::ostream &out)
   {
     reference_shape.reset();
-    if (reference_equilibrium == "none")
+    if (!reference_equilibrium)
       return;
+    const std::string branch_name =
+      *reference_equilibrium == AxisymmetricEquilibrium::Branch::oblate ? "oblate" : "prolate";
     AxisymmetricEquilibrium::Parameters p;
     p.area             = initial_values.area;
     p.reduced_volume   = initial_values.reduced_volume;
-    p.branch           = (reference_equilibrium == "oblate" ? AxisymmetricEquilibrium::Branch::oblate :
-                                                              AxisymmetricEquilibrium::Branch::prolate);
+    p.branch           = *reference_equilibrium;
     p.bending_number   = bending_number;
     p.prescribed       = AxisymmetricEquilibrium::Prescribed::angular_momentum;
     p.angular_momentum = initial_values.angular_momentum * axis;
@@ -358,14 +363,14 @@ namespace FluidSurface
       }
     catch (const std::exception &exc)
       {
-        throw EntryError("diagnostics/reference equilibrium = " + reference_equilibrium +
+        throw EntryError("diagnostics/reference equilibrium = " + branch_name +
                          ": no rotating equilibrium with the run's area " + std::to_string(p.area) +
                          ", reduced volume " + std::to_string(p.reduced_volume) + " and angular momentum " +
                          std::to_string(p.angular_momentum) + " (" + exc.what() +
                          "); expected a branch that exists, or none.");
       }
     reference_meridian = meridian_radii(*reference_shape, section_angles);
-    out << "   E(L2) reference: " << reference_equilibrium << " equilibrium at L = " << std::setprecision(8)
+    out << "   E(L2) reference: " << branch_name << " equilibrium at L = " << std::setprecision(8)
         << p.angular_momentum
         << ": ω = " << reference_shape->angular_velocity() << ", F_bend = " << reference_shape->bending_energy()
         << ", I_zz = " << reference_shape->inertia_zz() << std::endl;

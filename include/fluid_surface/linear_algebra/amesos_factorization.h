@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -59,6 +60,18 @@ namespace FluidSurface
     /// dst = (LU)⁻¹ src with the factors of the last factorize() (collective).
     void
     solve(dealii::TrilinosWrappers::MPI::Vector &dst, const dealii::TrilinosWrappers::MPI::Vector &src);
+
+    /**
+     * An orthogonal change of variables T of the unknowns: T(v, false) replaces v by Tv, T(v, true) by Tᵀv
+     * (e.g. a rotation of the vector unknowns node by node).
+     */
+    using ChangeOfVariables = std::function<void(dealii::TrilinosWrappers::MPI::Vector &, bool)>;
+
+    /// dst = T (LU)⁻¹ Tᵀ src, the inverse of T A Tᵀ for the factorized A; solve() if @p change is nullptr.
+    void
+    solve(dealii::TrilinosWrappers::MPI::Vector       &dst,
+          const dealii::TrilinosWrappers::MPI::Vector &src,
+          const ChangeOfVariables                     *change);
 
     /// Whether factorize() succeeded since construction or the last failure.
     bool

@@ -71,9 +71,12 @@ namespace FluidSurface
     /// A preconditioner of @p system; initialize() gives it the factors.
     explicit BorderedFactorizationPreconditioner(const BorderedSystem &system);
 
-    /// Uses the factors of A₀ (kept by the caller): Z = A₀⁻¹ C and S⁻¹.
+    /**
+     * Uses the factors of A₀ (kept by the caller): Z = A₀⁻¹ C and S⁻¹. With a change of variables T
+     * (@p change, not nullptr), A₀⁻¹ stands for T A₀⁻¹ Tᵀ, the inverse of T A₀ Tᵀ.
+     */
     void
-    initialize(AmesosFactorization &factorization);
+    initialize(AmesosFactorization &factorization, const AmesosFactorization::ChangeOfVariables *change = nullptr);
 
     /// dst = K₀⁻¹ src: y = A₀⁻¹ r, μ = S⁻¹(Rᵀy − s), x = y − Zμ.
     void
@@ -91,8 +94,9 @@ namespace FluidSurface
     std::vector<double>
     schur_solve(const BorderedSystem::Vector &x, const std::vector<double> &g) const;
 
-    AmesosFactorization                *factorization = nullptr;
-    const BorderedSystem               &system;
+    AmesosFactorization                          *factorization = nullptr;
+    const AmesosFactorization::ChangeOfVariables *change        = nullptr;
+    const BorderedSystem                         &system;
     std::vector<BorderedSystem::Vector> z;
     dealii::FullMatrix<double>          schur_inverse;
   };

@@ -14,11 +14,12 @@ namespace FluidSurface
   class FactorizationPreconditioner
   {
   public:
-    /// Uses the factors @p lu (kept by the caller).
+    /// Uses the factors @p lu (kept by the caller), of T A Tᵀ with the change of variables @p change (nullptr: none).
     void
-    initialize(AmesosFactorization &lu)
+    initialize(AmesosFactorization &lu, const AmesosFactorization::ChangeOfVariables *change = nullptr)
     {
       factors = &lu;
+      this->change = change;
     }
 
     /// dst = LU⁻¹ src.
@@ -27,11 +28,12 @@ namespace FluidSurface
     vmult(Vector &dst, const Vector &src) const
     {
       Assert(factors != nullptr, dealii::ExcNotInitialized());
-      factors->solve(dst, src);
+      factors->solve(dst, src, change);
     }
 
   private:
-    AmesosFactorization *factors = nullptr;
+    AmesosFactorization                            *factors = nullptr;
+    const AmesosFactorization::ChangeOfVariables *change  = nullptr;
   };
 } // namespace FluidSurface
 

@@ -107,6 +107,16 @@ namespace FluidSurface
     {
       factors_of_current_matrix = false;
     }
+    /**
+     * The matrices of the next solves are close to T A₀ Tᵀ, A₀ the factorized one, with the change of variables
+     * @p change (a rotation of the vector unknowns since the factorization): GMRES is then preconditioned by
+     * T A₀⁻¹ Tᵀ. Dropped when a matrix is factorized; an empty function: none.
+     */
+    void
+    set_change_of_variables(AmesosFactorization::ChangeOfVariables change)
+    {
+      change_of_variables = std::move(change);
+    }
     /// The next solve factorizes its matrix, whatever GMRES would do.
     void
     request_factorization()
@@ -165,6 +175,8 @@ namespace FluidSurface
     Parameters                           parameters;
     std::string                          scene_direct_solver;
     std::unique_ptr<AmesosFactorization> factorization;
+    /// The change of variables T since the factorization (set_change_of_variables()); empty: none.
+    AmesosFactorization::ChangeOfVariables change_of_variables;
     bool                 factors_of_current_matrix = false; ///< the factors are of the matrix of the next solve
     bool                 factorization_requested   = true;
     unsigned int         factorization_count       = 0;

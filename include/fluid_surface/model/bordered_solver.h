@@ -3,6 +3,8 @@
 #define fluid_surface_model_bordered_solver_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/base/timer.h>
 
 #include <fluid_surface/linear_algebra/bordered_system.h>
@@ -56,6 +58,17 @@ namespace FluidSurface
           const StepRequest::Solver    solver,
           BorderedSystem::BlockVector &solution);
 
+    /**
+     * The accepted step turned the mesh and the vector unknowns by @p rotation (the co-rotating step's frame
+     * over τ): the next steps' matrices are close to those of the kept factors turned by the rotations since
+     * the factorization, and GMRES is preconditioned by the turned factors (doc/scheme.md, "The co-rotating
+     * step").
+     */
+    void
+    turn_kept_factors(const dealii::Tensor<2, 3> &rotation)
+    {
+      rotation_since_factorization = rotation * rotation_since_factorization;
+    }
     /// The next solve factorizes its matrix (the surface jumped: a restore, a re-parametrization).
     void
     request_factorization()
@@ -105,6 +118,8 @@ namespace FluidSurface
     /// The fresh KLU solves: MUMPS refused (error −22) the mesh-law matrix of a sheared refinement-3 mesh that
     /// KLU factorized (tests/mesh_reparametrization).
     ReusedFactorizationSolver fresh;
+    /// The rotation of the vector unknowns since the kept factorization (turn_kept_factors()).
+    dealii::Tensor<2, 3> rotation_since_factorization = dealii::unit_symmetric_tensor<3>();
     /// The state and multipliers of the last solve: the initial guess of the next step's GMRES.
     BorderedSystem::BlockVector last_solution;
   };

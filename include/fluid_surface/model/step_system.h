@@ -2,6 +2,7 @@
 #ifndef fluid_surface_model_step_system_h
 #define fluid_surface_model_step_system_h
 
+#include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -166,11 +167,17 @@ namespace FluidSurface
      */
     void
     carry_fields(const RigidMotion &carried, const double tau, VectorType &solution) const;
+    /// The vector unknowns u and Y of @p v turned by @p rotation node by node (about the origin).
+    void
+    rotate_vector_unknowns(const dealii::Tensor<2, 3> &rotation, VectorType &v) const;
 
   private:
     /// velocity_nodes and position_nodes from the cells.
     void
     list_nodes();
+    /// Each node of @p nodes in @p v turned by @p rotation (owned entries; the caller compresses).
+    static void
+    turn_nodes(const std::vector<Node> &nodes, const dealii::Tensor<2, 3> &rotation, VectorType &v);
     /// position_pairs and position_geometry_dofs: Y_d and X_d share the nodes of Q_k.
     void
     pair_position_dofs();

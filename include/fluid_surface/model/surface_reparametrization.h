@@ -161,6 +161,13 @@ namespace FluidSurface
      */
     std::string
     relax_mesh(SurfaceStep &step, const VectorType &start_surface, const VectorType &start_fields, VectorType &state) const;
+    /**
+     * The velocity of the relaxed mesh back onto the discrete constraints: one step of the scheme with τ =
+     * projection_time_step (a fresh KLU factorization), then the momenta restored. Returns why the solve
+     * failed, or nothing.
+     */
+    std::string
+    project_velocity(SurfaceStep &step, SurfaceState &accepted, const StepRequest &run_request) const;
     unsigned int count = 0; ///< re-parametrizations so far
     /// The largest relative jumps of F, A, V and L of the re-parametrizations so far.
     Jumps largest_jumps = {{0, 0, 0, 0}};

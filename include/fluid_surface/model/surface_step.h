@@ -265,6 +265,8 @@ namespace FluidSurface
     VectorType candidate_solution;
     /// τ of the last advance().
     double last_tau = 0;
+    /// The rotation of the mesh by the candidate step's frame (co-rotating steps; else the identity).
+    dealii::Tensor<2, 3> candidate_rotation = dealii::unit_symmetric_tensor<3>();
     dealii::TimerOutput *step_timer = nullptr;
   };
 } // namespace FluidSurface

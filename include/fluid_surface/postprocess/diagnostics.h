@@ -15,6 +15,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -179,7 +180,8 @@ namespace FluidSurface
     double last_deviation = std::numeric_limits<double>::quiet_NaN();
     double omega_integral = 0, omega_time = 0;
 
-    std::string  reference_equilibrium = "none"; ///< `reference equilibrium`: none, prolate or oblate
+    /// `reference equilibrium`: the branch of the reference shape of E(L²); none: no reference
+    std::optional<AxisymmetricEquilibrium::Branch> reference_equilibrium;
     unsigned int section_angles        = 256;    ///< `section angles`: n of section_polar_radius
     std::vector<unsigned int> azimuthal_modes; ///< `azimuthal modes`: the m of the moments Q_m
     std::unique_ptr<AxisymmetricEquilibrium> reference_shape;
