@@ -144,6 +144,7 @@ namespace FluidSurface
     const int ierr = solver->NumericFactorization();
     AssertThrow(ierr == 0, ExcTrilinosError(ierr));
     factorized = true;
+    ++numeric_count;
   }
 
   void

@@ -87,8 +87,10 @@ namespace FluidSurface
     set_multipliers(dst, constraint_values(src.block(0)));
   }
 
-  BorderedFactorizationPreconditioner::BorderedFactorizationPreconditioner(const BorderedSystem &system)
+  BorderedFactorizationPreconditioner::BorderedFactorizationPreconditioner(const BorderedSystem &system,
+                                                                           KeptColumns          *kept)
     : system(system)
+    , kept(kept)
   {}
 
   void
@@ -98,12 +100,19 @@ namespace FluidSurface
     factorization      = &factors;
     change             = change_of_variables;
     const unsigned int n = system.columns.size();
-    z.resize(n);
     schur_inverse.reinit(n, n);
-    for (unsigned int k = 0; k < n; ++k)
+    if (kept != nullptr && kept->valid && kept->factors == factors.n_numeric_factorizations() && kept->z.size() == n)
+      z = kept->z;
+    else
       {
-        z[k].reinit(*system.columns[k], true);
-        factorization->solve(z[k], *system.columns[k], change);
+        z.resize(n);
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            z[k].reinit(*system.columns[k], true);
+            factorization->solve(z[k], *system.columns[k], change);
+          }
+        if (kept != nullptr)
+          *kept = {z, factors.n_numeric_factorizations(), true};
       }
     for (unsigned int j = 0; j < n; ++j)
       for (unsigned int k = 0; k < n; ++k)

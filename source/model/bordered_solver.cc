@@ -36,7 +36,8 @@ namespace FluidSurface
                         const StepSystem            &step_system,
                         const std::vector<double>   &values,
                         const StepRequest::Solver    solver,
-                        BorderedSystem::BlockVector &solution)
+                        BorderedSystem::BlockVector &solution,
+                        const bool                   same_step)
   {
     Outcome                     outcome;
     BorderedSystem::BlockVector rhs = system.make_vector(step_system.rhs());
@@ -54,7 +55,9 @@ namespace FluidSurface
           });
         else if (&linear_solver == &kept)
           kept.set_change_of_variables(nullptr);
-        BorderedFactorizationPreconditioner     preconditioner(system);
+        if (!same_step)
+          kept_columns.valid = false;
+        BorderedFactorizationPreconditioner preconditioner(system, &linear_solver == &kept ? &kept_columns : nullptr);
         const ReusedFactorizationSolver::Result result =
           linear_solver.solve(step_system.matrix(), system, solution, rhs, preconditioner);
         preconditioner.enforce_constraints(solution, BorderedSystem::multipliers(rhs));

@@ -243,12 +243,12 @@ namespace FluidSurface
   }
 
   bool
-  SurfaceStep::solve(StepUnderWay &step, BorderedSystem::BlockVector &solution, Result &result)
+  SurfaceStep::solve(StepUnderWay &step, BorderedSystem::BlockVector &solution, Result &result, const bool same_step)
   {
     const GlobalConstraints &constraints = step.constraints;
     const BorderedSystem     bordered(system.matrix(), constraints.columns, constraints.rows);
     const BorderedSolver::Outcome outcome =
-      bordered_solver.solve(bordered, system, constraints.values, step.request.solver, solution);
+      bordered_solver.solve(bordered, system, constraints.values, step.request.solver, solution, same_step);
     result.linear_iterations += outcome.iterations;
     result.factorized = result.factorized || outcome.factorized;
     if (outcome.failure != StepFailure::none)
@@ -307,7 +307,7 @@ namespace FluidSurface
           if (step.constraints.rigid_rows && parts.flow.inertia && iteration.implicit != Implicit::normal)
             set_constraint_values(rigid_motion(step.request, state.solution).momenta, step.constraints);
         }
-        if (!solve(step, solution, result))
+        if (!solve(step, solution, result, true))
           return false;
         result.geometry_iterations = k;
         result.geometry_change     = system.largest_node_move(solution.block(0), surface) / node_spacing;

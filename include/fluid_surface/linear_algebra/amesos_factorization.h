@@ -80,6 +80,12 @@ namespace FluidSurface
       return factorized;
     }
 
+    /// The number of numeric factorizations so far: which factors these are.
+    unsigned int
+    n_numeric_factorizations() const
+    {
+      return numeric_count;
+    }
     /// The number of symbolic analyses so far.
     unsigned int
     n_symbolic_factorizations() const
@@ -106,6 +112,7 @@ namespace FluidSurface
     std::uint64_t                         analysed_hash  = 0;
     bool                                  factorized     = false;
     unsigned int                          symbolic_count = 0;
+    unsigned int                          numeric_count  = 0;
   };
 } // namespace FluidSurface
 

@@ -68,8 +68,21 @@ namespace FluidSurface
   class BorderedFactorizationPreconditioner
   {
   public:
-    /// A preconditioner of @p system; initialize() gives it the factors.
-    explicit BorderedFactorizationPreconditioner(const BorderedSystem &system);
+    /**
+     * Z = A₀⁻¹C of an earlier solve with the same factors, kept by the caller: the solves of one step (the
+     * geometry iteration's) take it over instead of solving for Z again. The preconditioner is then the exact
+     * inverse of [A₀ A₀Z; Rᵀ 0], the bordered matrix with the earlier columns and the current rows; S = RᵀZ is
+     * formed anew, so the constraints of enforce_constraints() hold to round-off all the same.
+     */
+    struct KeptColumns
+    {
+      std::vector<BorderedSystem::Vector> z;
+      unsigned int                        factors = 0; ///< AmesosFactorization::n_numeric_factorizations() of z
+      bool                                valid   = false;
+    };
+
+    /// A preconditioner of @p system; initialize() gives it the factors. With @p kept: see KeptColumns.
+    explicit BorderedFactorizationPreconditioner(const BorderedSystem &system, KeptColumns *kept = nullptr);
 
     /**
      * Uses the factors of A₀ (kept by the caller): Z = A₀⁻¹ C and S⁻¹. With a change of variables T
@@ -97,6 +110,7 @@ namespace FluidSurface
     AmesosFactorization                          *factorization = nullptr;
     const AmesosFactorization::ChangeOfVariables *change        = nullptr;
     const BorderedSystem                         &system;
+    KeptColumns                                  *kept;
     std::vector<BorderedSystem::Vector> z;
     dealii::FullMatrix<double>          schur_inverse;
   };

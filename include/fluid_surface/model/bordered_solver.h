@@ -49,14 +49,18 @@ namespace FluidSurface
     initial_guess(const BorderedSystem &system, const VectorType &rhs, const unsigned int n_constraints) const;
     /**
      * Solves the @p system of @p step_system with the constraint values @p values by the solver @p solver, from
-     * and into @p solution; distributes the hanging-node constraints.
+     * and into @p solution; distributes the hanging-node constraints. @p same_step: a solve of the geometry
+     * iteration after the step's first one, which takes over Z = A₀⁻¹C of the kept factors from the step's
+     * earlier solves (BorderedFactorizationPreconditioner::KeptColumns: the columns of one step differ by the
+     * move of its surface).
      */
     Outcome
     solve(const BorderedSystem        &system,
           const StepSystem            &step_system,
           const std::vector<double>   &values,
           const StepRequest::Solver    solver,
-          BorderedSystem::BlockVector &solution);
+          BorderedSystem::BlockVector &solution,
+          const bool                   same_step = false);
 
     /**
      * The accepted step turned the mesh and the vector unknowns by @p rotation (the co-rotating step's frame
@@ -118,6 +122,8 @@ namespace FluidSurface
     /// The fresh KLU solves: MUMPS refused (error −22) the mesh-law matrix of a sheared refinement-3 mesh that
     /// KLU factorized (tests/mesh_reparametrization).
     ReusedFactorizationSolver fresh;
+    /// Z = A₀⁻¹C of the step's first solve with the kept factors.
+    BorderedFactorizationPreconditioner::KeptColumns kept_columns;
     /// The rotation of the vector unknowns since the kept factorization (turn_kept_factors()).
     dealii::Tensor<2, 3> rotation_since_factorization = dealii::unit_symmetric_tensor<3>();
     /// The state and multipliers of the last solve: the initial guess of the next step's GMRES.

@@ -228,8 +228,9 @@ namespace FluidSurface
     void
     set_constraint_values(const std::array<double, 6> &momenta, GlobalConstraints &constraints) const;
     /// Solves the bordered system into @p solution; records the solve in @p result. Returns whether it solved.
+    /// @p same_step: a solve of the geometry iteration (BorderedSolver::solve()).
     bool
-    solve(StepUnderWay &step, BorderedSystem::BlockVector &solution, Result &result);
+    solve(StepUnderWay &step, BorderedSystem::BlockVector &solution, Result &result, const bool same_step = false);
     /// The implicit geometry: the step assembled again on the surface of its own solution until the nodes
     /// stop moving (GeometryIteration). Returns whether it converged (else @p result says why).
     bool
