@@ -3,7 +3,8 @@
 # benchmarks/rotating_modes/exactness.sh (issue 33, item 1): a rotating axisymmetric equilibrium started at its own
 # state (prm/seeded_mode_oblate.prm without the seed) for 100 steps of τ = 0.1 and 1000 steps of τ = 0.01 (t = 10)
 # with each step (backward Euler or BDF2, one geometry correction; lab or Tisserand frame). How far it moves: the
-# change of ω and of the L² distance to the equilibrium shape E(L²) from t = 0 to t = 10 (exactness.csv).
+# change of ω and of the L² distance to the equilibrium shape E(L²) from t = 0 to t = 10 (exactness.csv). The energy
+# check is off (a fixed step; the discrete state relaxes from the collocated equilibrium).
 #   benchmarks/rotating_modes/exactness.sh        from the repository root, after building
 # Environment: REFINEMENT (default 2), SCHEMES (default "be bdf2"), FRAMES (default "lab Tisserand"), WORK, EXE.
 set -u
@@ -23,6 +24,7 @@ subsection geometry
 end
 subsection initial state
   set shape perturbation = 0
+  set perturbation form = random
 end
 subsection time stepping
   set end time = 10
@@ -31,6 +33,9 @@ subsection time stepping
   set adaptive = false
   set scheme = $([ $s = bdf2 ] && echo BDF2 || echo "backward Euler")
   set frame = $frame
+  # a fixed step must not be stopped by the energy check: the discrete state is not a discrete equilibrium, and F
+  # moves by its relaxation (about 6e-5 F in the first steps of τ = 0.01 at refinement 2)
+  set energy tolerance = 1
 end
 subsection output
   set output directory = $work/$name
