@@ -6,11 +6,11 @@
 # without the tangential relaxation (a1_r0). Each run's summary goes to WORK/<run>/summary; the committed CSV files
 # were tabulated from them (prolate_r3_tau.csv, prolate_r3_hypotheses.csv).
 #   benchmarks/work_precision/prolate_r3/run.sh [RUN ...]     from the repository root, after building
-# Environment: WORK (default /tmp/prolate_r3), EXE. Runs resume from their checkpoints.
+# Environment: WORK (default benchmarks/work_precision/prolate_r3/work, not committed), EXE. Runs resume from their checkpoints.
 set -u
 cd "$(dirname "$0")/../../.."
 exe=${EXE:-$PWD/build/fluid_surface}
-work=${WORK:-/tmp/prolate_r3}
+work=${WORK:-$PWD/benchmarks/work_precision/prolate_r3/work}
 mkdir -p "$work"
 runs=${*:-"tau0.1 tau0.05 tau0.025 tau0.0125 tau0.1_s0.0025 tau0.1_q22 tau0.1_a1 tau0.05_a1 tau0.025_a1 tau0.0125_a1 tau0.1_a1_r0 tau0.025_a1_r0"}
 for run in $runs; do
