@@ -14,13 +14,15 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 here = os.path.dirname(os.path.abspath(__file__))
-files = sys.argv[1:] or [os.path.join(here, f) for f in ("results.csv", "results_quick.csv")
+files = sys.argv[1:] or [os.path.join(here, f) for f in ("results.csv", "results_predictor.csv")
                          if os.path.exists(os.path.join(here, f))]
 rows = [r for f in files for r in csv.DictReader(open(f))]
 cases = sorted({(r["shape"], r["m"], r["parity"], r["refinement"]) for r in rows})
 fig, axes = plt.subplots(1, len(cases), figsize=(4.2 * len(cases), 3.8), squeeze=False)
 styles = {("be", "lab"): ("C0", "o", "backward Euler, lab"), ("be", "Tisserand"): ("C1", "s", "backward Euler, co-rotating"),
-          ("bdf2", "lab"): ("C2", "^", "BDF2, lab"), ("bdf2", "Tisserand"): ("C3", "D", "BDF2, co-rotating")}
+          ("bdf2s", "lab"): ("C2", "^", "BDF2, lab, from S^m"), ("bdf2s", "Tisserand"): ("C3", "D", "BDF2, co-rotating, from S^m"),
+          ("bdf2", "Tisserand"): ("C4", "v", "BDF2, co-rotating, linear predictor (shipped)"),
+          ("bdf2q", "Tisserand"): ("C5", "x", "BDF2, co-rotating, quadratic predictor")}
 for ax, case in zip(axes[0], cases):
     sel = [r for r in rows if (r["shape"], r["m"], r["parity"], r["refinement"]) == case]
     sigma = float(sel[0]["linearized rate"])

@@ -8,7 +8,8 @@
 #     --quick: the oblate's m = 2 even at refinement 2, τ = 0.1 and 0.05 (8 runs, minutes)
 # Environment: WORK (default benchmarks/rotating_modes/work, not committed), EXE, JOBS (runs at once, default 1),
 # REFINEMENT (default 3), TAUS (default "0.1 0.05 0.025"), CASES (default: the three modes below), SCHEMES
-# (default "be bdf2"), FRAMES (default "lab Tisserand").
+# (default "be bdf2"; bdf2 is the shipped BDF2 with the linear predictor of the geometry, bdf2s the one from S^m,
+# bdf2q the quadratic one), FRAMES (default "lab Tisserand"), OUT (default results.csv, results_quick.csv with --quick).
 set -u
 cd "$(dirname "$0")/../.."
 here=benchmarks/rotating_modes
@@ -23,7 +24,9 @@ queue=""
 for c in $cases; do
   IFS=: read -r shape m parity <<< "$c"
   for s in ${SCHEMES:-be bdf2}; do for frame in ${FRAMES:-lab Tisserand}; do for tau in $taus; do
-    scheme=$([ "$s" = bdf2 ] && echo BDF2 || echo "backward Euler")
+    # bdf2: the shipped BDF2 (linear predictor of the geometry); bdf2s: from S^m (the step before); bdf2q: quadratic
+    scheme=$([ "$s" = be ] && echo "backward Euler" || echo BDF2)
+    predictor=$(case $s in bdf2s) echo "old surface";; bdf2q) echo quadratic;; *) echo linear;; esac)
     name=${shape}_m${m}_${parity}_r${refinement}_${s}_${frame}_tau${tau}
     {
       echo "include $PWD/prm/seeded_mode_$shape.prm"
@@ -31,6 +34,7 @@ for c in $cases; do
       echo "subsection initial state"; echo "  set azimuthal wavenumber = $m"; echo "  set azimuthal parity = $parity"; echo "end"
       echo "subsection time stepping"; echo "  set end time = $end"; echo "  set time step = $tau"
       echo "  set maximum time step = $tau"; echo "  set scheme = $scheme"; echo "  set frame = $frame"; echo "end"
+      echo "subsection geometry iteration"; echo "  set predictor = $predictor"; echo "end"
       echo "subsection output"; echo "  set output directory = $work/$name"; echo "  set overwrite = true"
       echo "  set write vtu = false"; echo "  set screen interval = 100000"; echo "end"
     } > "$work/$name.prm"
@@ -46,6 +50,6 @@ run_one() {
 }
 export -f run_one; export exe work
 echo $queue | tr ' ' '\n' | xargs -P "${JOBS:-1}" -I{} bash -c 'run_one {}'
-/usr/bin/python3 $here/table.py "$work" $queue > "$here/results${1:+_$1}.csv.tmp" && \
-  mv "$here/results${1:+_$1}.csv.tmp" "$here/results$([ $refinement = 2 ] && echo _quick).csv"
-cat "$here/results$([ $refinement = 2 ] && echo _quick).csv"
+out=$here/${OUT:-results$([ $refinement = 2 ] && echo _quick).csv}
+/usr/bin/python3 $here/table.py "$work" $queue > "$out.tmp" && mv "$out.tmp" "$out"
+cat "$out"

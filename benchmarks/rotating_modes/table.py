@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """results.csv of benchmarks/rotating_modes: one row per seeded run, the measured growth rate beside the linearized
-rate σ (scene stability with the co-rotating step, benchmarks/spectrum/linearized_tisserand.csv, else the lab
-frame's benchmarks/spectrum/linearized.csv; extrapolated to τ → 0 from τ = 0.02 and 0.01 where both exist, second
+rate σ (scene stability with the shipped step about the settled base state, benchmarks/spectrum/linearized_settled.csv,
+else the co-rotating step's older linearized_tisserand.csv, else the lab frame's linearized.csv; extrapolated to τ → 0 from τ = 0.02 and 0.01 where both exist, second
 order) and the one-mode prediction ln|z(λτ)|/τ of predict.py with λ = σ + iν_seen.
 
     table.py <work directory> <run name> ...
@@ -20,7 +20,8 @@ import statistics_columns  # noqa: E402
 
 def linearized(shape, refinement, m, parity):
     rows = {}
-    for name in ("linearized_tisserand.csv", "linearized.csv"):  # the co-rotating step's rows first
+    # the settled base state with the shipped step first, then the co-rotating step's older rows, then the lab's
+    for name in ("linearized_settled.csv", "linearized_tisserand.csv", "linearized.csv"):
         path = os.path.join(here, "..", "spectrum", name)
         if not os.path.exists(path):
             continue
@@ -61,7 +62,7 @@ def main():
         ref = linearized(shape, refinement, m, parity)
         sigma, nu, origin = ref if ref else (float("nan"), float("nan"), "none")
         seen = nu + m * omega if frame == "lab" else nu
-        rate = predict.rate_bdf2 if scheme == "bdf2" else predict.rate_be
+        rate = predict.rate_bdf2 if scheme.startswith("bdf2") else predict.rate_be
         predicted = rate(complex(sigma, seen), tau)
         print(f"{name},{shape},{m},{parity},{refinement},{scheme},{frame},{tau},{measured:.5f},{sigma:.5f},{nu:.4f},"
               f"{origin},{omega:.5f},{seen:.4f},{predicted:.5f},{(measured - sigma) / sigma:+.4f},"

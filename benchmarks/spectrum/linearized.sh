@@ -8,8 +8,9 @@
 #     (shapes: oblate prolate; --quick: the oblate's m = 2 even at refinement 2)
 # Environment: WORK (default benchmarks/spectrum/work, not committed), EXE, JOBS (runs at once, default 1),
 # REFINEMENTS (default "3"), TAUS (default "0.02"), RES (Reynolds numbers, default "1"), MODES (default "0 1 2 3 4"),
-# PARITIES (default "even odd"), FRAMES (default "Tisserand": the co-rotating step; "lab" the old one); each run
-# computes all MODES × PARITIES.
+# PARITIES (default "even odd"), FRAMES (default "Tisserand": the co-rotating step; "lab" the old one), SETTLE (the
+# settling time, default that of the prm file), OUT (default work/linearized.csv); each run computes all MODES ×
+# PARITIES.
 set -u
 cd "$(dirname "$0")/../.."
 here=benchmarks/spectrum
@@ -30,7 +31,7 @@ queue=$(for shape in $shapes; do for r in $refinements; do for tau in $taus; do 
     echo "subsection stability"; echo "  set wavenumbers = $(echo $modes | sed 's/ /, /g')"
     echo "  set parities = $(echo $parities | sed 's/ /, /g')"
     # the settling time of the prm, in steps of the new τ
-    settle=$(sed -n 's/^ *set settling time = *//p' "prm/stability_$shape.prm")
+    settle=${SETTLE:-$(sed -n 's/^ *set settling time = *//p' "prm/stability_$shape.prm")}
     [ -n "$settle" ] && echo "  set settling time = $settle"
     echo "end"
     echo "subsection output"; echo "  set output directory = $work/$name"; echo "  set overwrite = true"; echo "end"
@@ -40,7 +41,7 @@ done; done; done; done; done)
 run_one() { "$exe" "$work/$1.prm" > "$work/$1.log" 2>&1; echo "$1 exit $?"; }
 export -f run_one; export exe work
 echo "$queue" | xargs -P "${JOBS:-1}" -I{} bash -c 'run_one {}'
-out=$work/linearized.csv
+out=${OUT:-$work/linearized.csv}
 head -n 1 "$work/$(echo "$queue" | head -n 1)/spectrum.csv" 2>/dev/null | sed 's/^/shape,refinement,tau,Re,frame,/' > "$out"
 for name in $queue; do
   [ -f "$work/$name/spectrum.csv" ] || { echo "$name: no spectrum.csv"; continue; }

@@ -58,6 +58,16 @@ namespace FluidSurface
                       "θ, ½ ≤ θ ≤ 1: the re-assemblies take their geometry from the surface S^{m+θ} with the nodes "
                       "X^m + θ (Ỹ_k − X^m) between the old surface and the iterate: 1 the new time level (backward "
                       "Euler in the geometry), ½ the midpoint.");
+    prm.declare_entry("predictor",
+                      "linear",
+                      Patterns::Selection("linear|quadratic|old surface"),
+                      "The surface S^{m+1,0} the first solve of an iterated step is assembled on: the new position "
+                      "extrapolated from the accepted states (carried into the frame of the step), with BDF2 after its "
+                      "first step. linear: (1 + ω)X^m − ωX^{m−1}, ω = τ/τ_p, an O(τ²) error; quadratic: through X^m, "
+                      "X^{m−1}, X^{m−2} (linear while only two exist), O(τ³), but it amplifies unresolved motion "
+                      "sevenfold and broke the mesh of the relaxing prolate; old surface: S^m, O(τ). One correction "
+                      "(N_g = 1) scales that error by the iteration's contraction, which does not fall with τ: from S^m "
+                      "the step is first order (doc/scheme.md, \"Second order in time\").");
     prm.declare_entry("anderson depth",
                       "5",
                       Patterns::Integer(1, 20),
@@ -89,6 +99,8 @@ namespace FluidSurface
     const std::string relax = prm.get("relaxation");
     relaxation     = relax == "none" ? Relaxation::none : relax == "aitken" ? Relaxation::aitken : Relaxation::anderson;
     anderson_depth = prm.get_integer("anderson depth");
+    const std::string guess = prm.get("predictor");
+    predictor = guess == "old surface" ? Predictor::old_surface : guess == "linear" ? Predictor::linear : Predictor::quadratic;
     time_level     = prm.get_double("time level");
     const std::string mode = prm.get("implicit");
     implicit = mode == "normal" ? Implicit::normal : mode == "metric" ? Implicit::metric : Implicit::all;

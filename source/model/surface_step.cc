@@ -413,20 +413,32 @@ namespace FluidSurface
                       StepAssembly(parts, request, co_rotating, system),
                       {},
                       old_curvature};
+    const bool iterating = corrected_steps.iterating(parts.geometry_iteration) &&
+                           request.prescribed_velocity() == nullptr && request.global_constraints;
+    // The first solve of an iterated BDF2 step on the extrapolated surface, of second order: one correction from
+    // there leaves an O(τ³) or O(τ²) geometry, one from S^m an O(τ) one (doc/scheme.md, "Second order in time").
+    using Predictor                = GeometryIteration::Predictor;
+    const Predictor   predictor    = parts.geometry_iteration.predictor;
+    const VectorType *extrapolated = !iterating || predictor == Predictor::old_surface ? nullptr :
+                                     predictor == Predictor::quadratic && start.extrapolated[1] ?
+                                                                                           start.extrapolated[1] :
+                                                                                           start.extrapolated[0];
+    const bool predicted = extrapolated != nullptr;
     {
       TimerSection section(step_timer, "assembly");
+      if (predicted)
+        system.copy_new_position_to_geometry(*extrapolated);
       assemble(step, geometry.normal_field());
     }
     set_up_global_constraints(step, step.constraints);
-    set_constraint_values(motion.momenta, step.constraints);
+    set_constraint_values(predicted ? rigid_motion(request, state.solution).momenta : motion.momenta, step.constraints);
     BorderedSystem::BlockVector solution = bordered_solver.initial_guess(
       BorderedSystem(system.matrix(), step.constraints.columns, step.constraints.rows),
       system.rhs(),
       step.constraints.columns.size());
     if (!solve(step, solution, result))
       return result;
-    if (corrected_steps.iterating(parts.geometry_iteration) && request.prescribed_velocity() == nullptr &&
-        request.global_constraints && !iterate_geometry(step, solution, result))
+    if (iterating && !iterate_geometry(step, solution, result))
       return result;
     finish(step, solution.block(0), result);
     return result;

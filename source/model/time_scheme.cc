@@ -61,12 +61,34 @@ namespace FluidSurface
     const SurfaceGeometry &geometry = system.geometry();
     start_position.reinit(geometry.locally_owned_dofs(), geometry.locally_relevant_dofs(), geometry.get_communicator());
     start_position = system.new_position(start);
-    return {tau * (1 + omega) / (1 + 2 * omega), start_position, start_fields, lagged_fields, true};
+    StepStart result{tau * (1 + omega) / (1 + 2 * omega), start_position, start_fields, lagged_fields, true};
+    result.extrapolated[0] = &lagged_fields;
+    if (earlier_step > 0)
+      {
+        // Lagrange's weights of t^m, t^{m−1}, t^{m−2} at t^{m+1}.
+        const double tp = previous_step, tpp = earlier_step;
+        VectorType   earlier = system.owned_vector(), quadratic = system.owned_vector();
+        earlier = earlier_solution;
+        if (carried_frame)
+          system.carry_fields(carried, tp + tpp, earlier);
+        quadratic = old_fields;
+        quadratic.sadd((tau + tp) * (tau + tp + tpp) / (tp * (tp + tpp)), -tau * (tau + tp + tpp) / (tp * tpp), previous);
+        quadratic.add(tau * (tau + tp) / ((tp + tpp) * tpp), earlier);
+        quadratic_fields       = system.ghosted_vector();
+        quadratic_fields       = quadratic;
+        result.extrapolated[1] = &quadratic_fields;
+      }
+    return result;
   }
 
   void
   VariableBDF2::accept(const VectorType &old_fields, const StepSystem &system, const double tau)
   {
+    if (previous_step > 0)
+      {
+        earlier_solution = previous_solution;
+        earlier_step     = previous_step;
+      }
     previous_solution = system.ghosted_vector();
     previous_solution = old_fields;
     previous_step     = tau;
@@ -83,17 +105,26 @@ namespace FluidSurface
       return;
     data.set("model/previous step", previous_step);
     data.set_fields("previous state", system.dof_handler(), {&previous_solution});
+    if (earlier_step == 0)
+      return;
+    data.set("model/earlier step", earlier_step);
+    data.set_fields("earlier state", system.dof_handler(), {&earlier_solution});
   }
 
   void
   VariableBDF2::load(const CheckpointData &data, const StepSystem &system)
   {
     previous_step = 0;
+    earlier_step  = 0;
     backward_euler_steps =
       data.has("model/backward Euler steps") ? static_cast<unsigned int>(data.get_double("model/backward Euler steps")) : 0;
     if (!data.has("model/previous step"))
       return;
     previous_solution = system.read_field(data, "previous state");
     previous_step     = data.get_double("model/previous step");
+    if (!data.has("model/earlier step"))
+      return;
+    earlier_solution = system.read_field(data, "earlier state");
+    earlier_step     = data.get_double("model/earlier step");
   }
 } // namespace FluidSurface

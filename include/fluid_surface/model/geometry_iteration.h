@@ -54,6 +54,14 @@ namespace FluidSurface
       after_rejection
     };
 
+    /// The surface the first solve of an iterated step is assembled on.
+    enum class Predictor
+    {
+      old_surface, ///< S^m: the corrections start from the lagged geometry (an O(τ) error)
+      linear,      ///< BDF2 with history: (1 + ω)X^m − ωX^{m−1} in the frame of the step (an O(τ²) error)
+      quadratic    ///< BDF2 with two states of history: through X^m, X^{m−1}, X^{m−2} (an O(τ³) error)
+    };
+
     /// How the next iterate is taken from the last ones (FixedPointAcceleration).
     enum class Relaxation
     {
@@ -66,6 +74,7 @@ namespace FluidSurface
     Apply        apply          = Apply::always; ///< every flow step, or the K steps after a rejected lagged one
     unsigned int corrected_steps = 20;  ///< K: accepted steps with iterated geometry after a rejection
     Implicit     implicit       = Implicit::all; ///< which geometric quantities come from the iterate
+    Predictor    predictor      = Predictor::linear; ///< the surface of the first solve
     Relaxation   relaxation     = Relaxation::anderson; ///< how the next iterate is formed
     double       time_level     = 1;    ///< θ: the re-assemblies are on S^{m+θ} = X^m + θ (Ỹ_k − X^m)
     unsigned int anderson_depth = 5;    ///< m: the number of last residual differences Anderson's mixing uses

@@ -4,6 +4,7 @@
 
 #include <fluid_surface/geometry/surface_geometry.h>
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -26,6 +27,9 @@ namespace FluidSurface
     const VectorType &transport; ///< the lagged fields of the convection (flow numbering)
     /// Law reference: the frame velocity R is taken at the new time level (second order) instead of at X̂.
     bool frame_velocity_on_new_surface;
+    /// Fields whose new position is x^{m+1} extrapolated from the history in the frame of the step, by degree
+    /// (index 0: linear, 1: quadratic); nullptr where the history is too short (GeometryIteration::Predictor).
+    std::array<const VectorType *, 2> extrapolated = {{nullptr, nullptr}};
   };
 
   /**
@@ -194,6 +198,7 @@ namespace FluidSurface
     forget_history() override
     {
       previous_step = 0;
+      earlier_step  = 0;
     }
     bool
     fall_back_to_backward_euler(const unsigned int steps) override
@@ -213,10 +218,15 @@ namespace FluidSurface
     /// x^{m−1} (flow numbering, ghosted) and the step τ_p that followed it; τ_p = 0: none.
     VectorType previous_solution;
     double     previous_step = 0;
+    /// x^{m−2} and the step τ_pp that followed it (the quadratic predictor only); τ_pp = 0: none.
+    VectorType earlier_solution;
+    double     earlier_step = 0;
     /// Steps left that are taken as backward-Euler steps after a rejection (fall_back_to_backward_euler()).
     unsigned int backward_euler_steps = 0;
     /// x̂ and u* of the step under way, ghosted; X̂ in the geometry numbering.
     VectorType start_fields, lagged_fields, start_position;
+    /// The quadratic extrapolation of x^{m+1} (StepStart::extrapolated), ghosted.
+    VectorType quadratic_fields;
   };
 } // namespace FluidSurface
 
