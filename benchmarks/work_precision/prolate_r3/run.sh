@@ -6,7 +6,8 @@
 # without the tangential relaxation (a1_r0). Each run's summary goes to WORK/<run>/summary; the committed CSV files
 # were tabulated from them (prolate_r3_tau.csv, prolate_r3_hypotheses.csv).
 #   benchmarks/work_precision/prolate_r3/run.sh [RUN ...]     from the repository root, after building
-# Environment: WORK (default benchmarks/work_precision/prolate_r3/work, not committed), EXE. Runs resume from their checkpoints.
+# Environment: WORK (default benchmarks/work_precision/prolate_r3/work, not committed), EXE, END (the end time of
+# the hypothesis runs, default 14). Runs resume from their checkpoints.
 set -u
 cd "$(dirname "$0")/../../.."
 exe=${EXE:-$PWD/build/fluid_surface}
@@ -15,7 +16,7 @@ mkdir -p "$work"
 runs=${*:-"tau0.1 tau0.05 tau0.025 tau0.0125 tau0.1_s0.0025 tau0.1_q22 tau0.1_a1 tau0.05_a1 tau0.025_a1 tau0.0125_a1 tau0.1_a1_r0 tau0.025_a1_r0"}
 for run in $runs; do
   tau=${run#tau}; tau=${tau%%_*}; variant=${run#tau$tau}
-  end=25; [ -n "$variant" ] && end=14
+  end=25; [ -n "$variant" ] && end=${END:-14}
   {
     echo "include $PWD/prm/prolate.prm"
     echo "subsection geometry"; echo "  set refinement = 3"; echo "end"
