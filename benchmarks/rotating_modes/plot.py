@@ -22,7 +22,8 @@ fig, axes = plt.subplots(1, len(cases), figsize=(4.2 * len(cases), 3.8), squeeze
 styles = {("be", "lab"): ("C0", "o", "backward Euler, lab"), ("be", "Tisserand"): ("C1", "s", "backward Euler, co-rotating"),
           ("bdf2s", "lab"): ("C2", "^", "BDF2, lab, from S^m"), ("bdf2s", "Tisserand"): ("C3", "D", "BDF2, co-rotating, from S^m"),
           ("bdf2", "Tisserand"): ("C4", "v", "BDF2, co-rotating, linear predictor (shipped)"),
-          ("bdf2q", "Tisserand"): ("C5", "x", "BDF2, co-rotating, quadratic predictor")}
+          ("bdf2q", "Tisserand"): ("C5", "x", "BDF2, co-rotating, quadratic predictor"),
+          ("bdf2n", "Tisserand"): ("C6", "P", "BDF2, co-rotating, quadratic normal predictor")}
 for ax, case in zip(axes[0], cases):
     sel = [r for r in rows if (r["shape"], r["m"], r["parity"], r["refinement"]) == case]
     sigma = float(sel[-1]["linearized rate"])  # the last file's σ: that of the settled base state

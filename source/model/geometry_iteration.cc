@@ -60,12 +60,14 @@ namespace FluidSurface
                       "Euler in the geometry), ½ the midpoint.");
     prm.declare_entry("predictor",
                       "linear",
-                      Patterns::Selection("linear|quadratic|old surface"),
+                      Patterns::Selection("linear|quadratic|quadratic normal|old surface"),
                       "The surface S^{m+1,0} the first solve of an iterated step is assembled on: the new position "
                       "extrapolated from the accepted states (carried into the frame of the step), with BDF2 after its "
                       "first step. linear: (1 + ω)X^m − ωX^{m−1}, ω = τ/τ_p, an O(τ²) error; quadratic: through X^m, "
                       "X^{m−1}, X^{m−2} (linear while only two exist), O(τ³), but it amplifies unresolved motion "
-                      "sevenfold and broke the mesh of the relaxing prolate; old surface: S^m, O(τ). One correction "
+                      "sevenfold and broke the mesh of the relaxing prolate; quadratic normal: the linear one plus the "
+                      "part along the normal ñ^m of quadratic − linear (the shape to O(τ³), the nodes' tangential "
+                      "places to O(τ²)); old surface: S^m, O(τ). One correction "
                       "(N_g = 1) scales that error by the iteration's contraction, which does not fall with τ: from S^m "
                       "the step is first order (doc/scheme.md, \"Second order in time\").");
     prm.declare_entry("anderson depth",
@@ -100,7 +102,10 @@ namespace FluidSurface
     relaxation     = relax == "none" ? Relaxation::none : relax == "aitken" ? Relaxation::aitken : Relaxation::anderson;
     anderson_depth = prm.get_integer("anderson depth");
     const std::string guess = prm.get("predictor");
-    predictor = guess == "old surface" ? Predictor::old_surface : guess == "linear" ? Predictor::linear : Predictor::quadratic;
+    predictor = guess == "old surface"      ? Predictor::old_surface :
+                guess == "linear"           ? Predictor::linear :
+                guess == "quadratic normal" ? Predictor::quadratic_normal :
+                                              Predictor::quadratic;
     time_level     = prm.get_double("time level");
     const std::string mode = prm.get("implicit");
     implicit = mode == "normal" ? Implicit::normal : mode == "metric" ? Implicit::metric : Implicit::all;

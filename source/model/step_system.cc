@@ -223,6 +223,25 @@ namespace FluidSurface
     flow_vector.compress(VectorOperation::insert);
   }
 
+  void
+  StepSystem::add_normal_part(const VectorType &difference, const VectorType &normal, VectorType &flow_vector) const
+  {
+    for (unsigned int n = 0; n < position_nodes.size(); ++n)
+      {
+        const Node  &node = position_nodes[n];
+        Tensor<1, 3> nu;
+        double       along = 0;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            nu[d] = normal[position_geometry_dofs[n][d]];
+            along += difference[node[d]] * nu[d];
+          }
+        for (unsigned int d = 0; d < 3; ++d)
+          flow_vector[node[d]] += along * nu[d];
+      }
+    flow_vector.compress(VectorOperation::add);
+  }
+
   double
   StepSystem::position_dot(const VectorType &a, const VectorType &b) const
   {

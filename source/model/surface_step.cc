@@ -98,7 +98,7 @@ namespace FluidSurface
   void
   SurfaceStep::set_time_scheme(const TimeScheme::Kind kind, const TimeScheme::Frame frame)
   {
-    time_scheme = TimeScheme::create(kind, frame);
+    time_scheme = TimeScheme::create(kind, frame, parts.geometry_iteration.predictor);
   }
 
   void
@@ -417,12 +417,7 @@ namespace FluidSurface
                            request.prescribed_velocity() == nullptr && request.global_constraints;
     // The first solve of an iterated BDF2 step on the extrapolated surface, of second order: one correction from
     // there leaves an O(τ³) or O(τ²) geometry, one from S^m an O(τ) one (doc/scheme.md, "Second order in time").
-    using Predictor                = GeometryIteration::Predictor;
-    const Predictor   predictor    = parts.geometry_iteration.predictor;
-    const VectorType *extrapolated = !iterating || predictor == Predictor::old_surface ? nullptr :
-                                     predictor == Predictor::quadratic && start.extrapolated[1] ?
-                                                                                           start.extrapolated[1] :
-                                                                                           start.extrapolated[0];
+    const VectorType *extrapolated = iterating ? start.predicted : nullptr;
     const bool predicted = extrapolated != nullptr;
     {
       TimerSection section(step_timer, "assembly");

@@ -9,11 +9,11 @@ namespace FluidSurface
   using namespace dealii;
 
   std::unique_ptr<TimeScheme>
-  TimeScheme::create(const Kind kind, const Frame frame)
+  TimeScheme::create(const Kind kind, const Frame frame, const GeometryIteration::Predictor predictor)
   {
     std::unique_ptr<TimeScheme> scheme;
     if (kind == Kind::bdf2)
-      scheme = std::make_unique<VariableBDF2>();
+      scheme = std::make_unique<VariableBDF2>(predictor);
     else
       scheme = std::make_unique<BackwardEuler>();
     if (frame == Frame::tisserand)
@@ -62,29 +62,51 @@ namespace FluidSurface
     start_position.reinit(geometry.locally_owned_dofs(), geometry.locally_relevant_dofs(), geometry.get_communicator());
     start_position = system.new_position(start);
     StepStart result{tau * (1 + omega) / (1 + 2 * omega), start_position, start_fields, lagged_fields, true};
-    result.extrapolated[0] = &lagged_fields;
-    if (earlier_step > 0)
-      {
-        // Lagrange's weights of t^m, t^{m−1}, t^{m−2} at t^{m+1}.
-        const double tp = previous_step, tpp = earlier_step;
-        VectorType   earlier = system.owned_vector(), quadratic = system.owned_vector();
-        earlier = earlier_solution;
-        if (carried_frame)
-          system.carry_fields(carried, tp + tpp, earlier);
-        quadratic = old_fields;
-        quadratic.sadd((tau + tp) * (tau + tp + tpp) / (tp * (tp + tpp)), -tau * (tau + tp + tpp) / (tp * tpp), previous);
-        quadratic.add(tau * (tau + tp) / ((tp + tpp) * tpp), earlier);
-        quadratic_fields       = system.ghosted_vector();
-        quadratic_fields       = quadratic;
-        result.extrapolated[1] = &quadratic_fields;
-      }
+    if (predictor != GeometryIteration::Predictor::old_surface)
+      result.predicted = quadratic_predictor() && earlier_step > 0 ?
+                           &quadratic_prediction(old_fields, previous, lagged, system, carried, carried_frame, tau) :
+                           &lagged_fields;
     return result;
+  }
+
+  const VectorType &
+  VariableBDF2::quadratic_prediction(const VectorType  &old_fields,
+                                     const VectorType  &previous,
+                                     const VectorType  &linear,
+                                     const StepSystem  &system,
+                                     const RigidMotion &carried,
+                                     const bool         carried_frame,
+                                     const double       tau)
+  {
+    // Lagrange's weights of t^m, t^{m−1}, t^{m−2} at t^{m+1}.
+    const double tp = previous_step, tpp = earlier_step;
+    VectorType   earlier = system.owned_vector(), quadratic = system.owned_vector();
+    earlier = earlier_solution;
+    if (carried_frame)
+      system.carry_fields(carried, tp + tpp, earlier);
+    quadratic = old_fields;
+    quadratic.sadd((tau + tp) * (tau + tp + tpp) / (tp * (tp + tpp)), -tau * (tau + tp + tpp) / (tp * tpp), previous);
+    quadratic.add(tau * (tau + tp) / ((tp + tpp) * tpp), earlier);
+    if (predictor == GeometryIteration::Predictor::quadratic_normal)
+      {
+        // The shape (the normal part) to third order, the nodes' tangential places of the linear one: their
+        // rows take the geometry at full weight, and the quadratic predictor's sevenfold amplification of
+        // unresolved tangential motion broke the relaxing prolate's mesh (doc/scheme.md).
+        quadratic -= linear;
+        VectorType normal_part = system.owned_vector();
+        normal_part            = linear;
+        system.add_normal_part(quadratic, system.geometry().normal_field(), normal_part);
+        quadratic = normal_part;
+      }
+    quadratic_fields = system.ghosted_vector();
+    quadratic_fields = quadratic;
+    return quadratic_fields;
   }
 
   void
   VariableBDF2::accept(const VectorType &old_fields, const StepSystem &system, const double tau)
   {
-    if (previous_step > 0)
+    if (previous_step > 0 && quadratic_predictor())
       {
         earlier_solution = previous_solution;
         earlier_step     = previous_step;
@@ -122,7 +144,7 @@ namespace FluidSurface
       return;
     previous_solution = system.read_field(data, "previous state");
     previous_step     = data.get_double("model/previous step");
-    if (!data.has("model/earlier step"))
+    if (!quadratic_predictor() || !data.has("model/earlier step"))
       return;
     earlier_solution = system.read_field(data, "earlier state");
     earlier_step     = data.get_double("model/earlier step");

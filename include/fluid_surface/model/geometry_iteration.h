@@ -59,7 +59,10 @@ namespace FluidSurface
     {
       old_surface, ///< S^m: the corrections start from the lagged geometry (an O(τ) error)
       linear,      ///< BDF2 with history: (1 + ω)X^m − ωX^{m−1} in the frame of the step (an O(τ²) error)
-      quadratic    ///< BDF2 with two states of history: through X^m, X^{m−1}, X^{m−2} (an O(τ³) error)
+      quadratic,   ///< BDF2 with two states of history: through X^m, X^{m−1}, X^{m−2} (an O(τ³) error)
+      /// The linear one plus the normal part (along ñ^m) of the quadratic one's difference from it: the shape
+      /// to O(τ³), the nodes' tangential places to O(τ²)
+      quadratic_normal
     };
 
     /// How the next iterate is taken from the last ones (FixedPointAcceleration).

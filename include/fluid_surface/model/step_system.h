@@ -146,6 +146,13 @@ namespace FluidSurface
       return position_geometry_dofs;
     }
 
+    /**
+     * Adds to Y of @p flow_vector, node by node, the part of Y of @p difference along the unit nodal field
+     * @p normal (geometry numbering, ghosted): y += ((d·ñ)ñ).
+     */
+    void
+    add_normal_part(const VectorType &difference, const VectorType &normal, VectorType &flow_vector) const;
+
     /// Y of @p flow_vector → the geometry's position field.
     void
     copy_new_position_to_geometry(const VectorType &flow_vector) const;

@@ -3,8 +3,8 @@
 #define fluid_surface_model_time_scheme_h
 
 #include <fluid_surface/geometry/surface_geometry.h>
+#include <fluid_surface/model/geometry_iteration.h>
 
-#include <array>
 #include <memory>
 #include <string>
 
@@ -27,9 +27,9 @@ namespace FluidSurface
     const VectorType &transport; ///< the lagged fields of the convection (flow numbering)
     /// Law reference: the frame velocity R is taken at the new time level (second order) instead of at X̂.
     bool frame_velocity_on_new_surface;
-    /// Fields whose new position is x^{m+1} extrapolated from the history in the frame of the step, by degree
-    /// (index 0: linear, 1: quadratic); nullptr where the history is too short (GeometryIteration::Predictor).
-    std::array<const VectorType *, 2> extrapolated = {{nullptr, nullptr}};
+    /// Fields whose Y is the new position predicted from the history in the frame of the step
+    /// (GeometryIteration::Predictor); nullptr: no prediction (S^m).
+    const VectorType *predicted = nullptr;
   };
 
   /**
@@ -52,9 +52,11 @@ namespace FluidSurface
       lab,      ///< the step is solved in the lab frame (law reference: in the frame of the shape's rigid motion)
       tisserand ///< in the frame that turns with the fluid's rigid motion Ω = I⁻¹L (CoRotatingFrame)
     };
-    /// The scheme @p kind in the frame @p frame.
+    /// The scheme @p kind in the frame @p frame; BDF2 predicts the new position by @p predictor.
     static std::unique_ptr<TimeScheme>
-    create(const Kind kind, const Frame frame = Frame::lab);
+    create(const Kind                            kind,
+           const Frame                           frame     = Frame::lab,
+           const GeometryIteration::Predictor predictor = GeometryIteration::Predictor::linear);
 
     /**
      * Whether the flow steps are solved in the Tisserand frame of u^m (RigidMotion::tisserand()): the frame
@@ -180,11 +182,17 @@ namespace FluidSurface
    * Variable-step BDF2 after a first backward-Euler step (and after each jump of the state), ω = τ/τ_p:
    * (α₀x − (1+ω)x^m + ω²/(1+ω)x^{m−1})/τ = f, α₀ = (1+2ω)/(1+ω), i.e. the backward-Euler form of size τ/α₀ from
    * x̂ = ((1+ω)x^m − ω²/(1+ω)x^{m−1})/α₀, with the convection lagged at u* = (1+ω)u^m − ωu^{m−1}. Keeps x^{m−1}
-   * and τ_p (checkpoint keys `model/previous step`, `previous state`).
+   * and τ_p (checkpoint keys `model/previous step`, `previous state`), and for a quadratic predictor x^{m−2} and
+   * τ_pp (`model/earlier step`, `earlier state`).
    */
   class VariableBDF2 : public TimeScheme
   {
   public:
+    /// BDF2 whose StepStart::predicted is by @p predictor.
+    explicit VariableBDF2(const GeometryIteration::Predictor predictor)
+      : predictor(predictor)
+    {}
+
     StepStart
     start(const VectorType  &old_position,
           const VectorType  &old_fields,
@@ -214,18 +222,37 @@ namespace FluidSurface
     load(const CheckpointData &data, const StepSystem &system) override;
 
   private:
+    /// Whether the predictor needs x^{m−2}.
+    bool
+    quadratic_predictor() const
+    {
+      return predictor == GeometryIteration::Predictor::quadratic ||
+             predictor == GeometryIteration::Predictor::quadratic_normal;
+    }
+    /// The quadratic predictor (of kind predictor) through x^m = @p old_fields, x^{m−1}, x^{m−2}, the latter
+    /// carried into the frame of the step; @p linear is the linear one.
+    const VectorType &
+    quadratic_prediction(const VectorType  &old_fields,
+                         const VectorType  &previous,
+                         const VectorType  &linear,
+                         const StepSystem  &system,
+                         const RigidMotion &carried,
+                         const bool         carried_frame,
+                         const double       tau);
+
+    GeometryIteration::Predictor predictor;
     BackwardEuler first_step;
     /// x^{m−1} (flow numbering, ghosted) and the step τ_p that followed it; τ_p = 0: none.
     VectorType previous_solution;
     double     previous_step = 0;
-    /// x^{m−2} and the step τ_pp that followed it (the quadratic predictor only); τ_pp = 0: none.
+    /// x^{m−2} and the step τ_pp that followed it (quadratic predictors only); τ_pp = 0: none.
     VectorType earlier_solution;
     double     earlier_step = 0;
     /// Steps left that are taken as backward-Euler steps after a rejection (fall_back_to_backward_euler()).
     unsigned int backward_euler_steps = 0;
     /// x̂ and u* of the step under way, ghosted; X̂ in the geometry numbering.
     VectorType start_fields, lagged_fields, start_position;
-    /// The quadratic extrapolation of x^{m+1} (StepStart::extrapolated), ghosted.
+    /// The quadratic prediction of x^{m+1} (StepStart::predicted), ghosted.
     VectorType quadratic_fields;
   };
 } // namespace FluidSurface
