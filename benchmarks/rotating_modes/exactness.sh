@@ -6,7 +6,8 @@
 # change of ω and of the L² distance to the equilibrium shape E(L²) from t = 0 to t = 10 (exactness.csv). The energy
 # check is off (a fixed step; the discrete state relaxes from the collocated equilibrium).
 #   benchmarks/rotating_modes/exactness.sh        from the repository root, after building
-# Environment: REFINEMENT (default 2), SCHEMES (default "be bdf2"), FRAMES (default "lab Tisserand"), WORK, EXE.
+# Environment: REFINEMENT (default 2), SCHEMES (default "be bdf2"; bdf2: the linear predictor of the geometry, bdf2s:
+# from S^m, bdf2n: quadratic normal), FRAMES (default "lab Tisserand"), OUT (default exactness.csv), WORK, EXE.
 set -u
 cd "$(dirname "$0")/../.."
 here=benchmarks/rotating_modes
@@ -31,11 +32,14 @@ subsection time stepping
   set time step = $tau
   set maximum time step = $tau
   set adaptive = false
-  set scheme = $([ $s = bdf2 ] && echo BDF2 || echo "backward Euler")
+  set scheme = $([ $s = be ] && echo "backward Euler" || echo BDF2)
   set frame = $frame
   # a fixed step must not be stopped by the energy check: the discrete state is not a discrete equilibrium, and F
   # moves by its relaxation (about 6e-5 F in the first steps of τ = 0.01 at refinement 2)
   set energy tolerance = 1
+end
+subsection geometry iteration
+  set predictor = $(case $s in bdf2s) echo "old surface";; bdf2n) echo "quadratic normal";; *) echo linear;; esac)
 end
 subsection output
   set output directory = $work/$name
@@ -48,7 +52,7 @@ PRM
   "$exe" "$work/$name.prm" > "$work/$name.log" 2>&1; status=$?
   echo "$name exit $status, $(echo "$(date +%s.%N) - $start" | bc) s"
 done; done; done
-/usr/bin/python3 - "$work" $names > $here/exactness.csv <<'PY'
+/usr/bin/python3 - "$work" $names > $here/${OUT:-exactness.csv} <<'PY'
 import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(sys.argv[0])) if sys.argv[0] != "-" else ".", "benchmarks", "phase3"))
 import statistics_columns
@@ -60,4 +64,4 @@ for name in names:
     print(f"{name},{len(w) - 1},{w[0]:.9f},{w[-1]:.9f},{w[-1] - w[0]:+.3e},{e[0]:.3e},{e[-1]:.3e},{max(e):.3e},"
           f"{max(abs(a / c['area'][0] - 1) for a in c['area']):.2e},{max(abs(v / c['volume'][0] - 1) for v in c['volume']):.2e}")
 PY
-cat $here/exactness.csv
+cat $here/${OUT:-exactness.csv}
