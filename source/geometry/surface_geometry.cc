@@ -253,6 +253,16 @@ namespace FluidSurface
     DoFTools::make_hanging_node_constraints(position_dofs, constraints);
     constraints.close();
 
+    // The mass matrix of [Q_k]³ couples each component only with itself.
+    Table<2, DoFTools::Coupling> same_component(3, 3);
+    for (unsigned int c = 0; c < 3; ++c)
+      for (unsigned int d = 0; d < 3; ++d)
+        same_component(c, d) = c == d ? DoFTools::always : DoFTools::none;
+    DynamicSparsityPattern dsp(relevant_dofs);
+    DoFTools::make_sparsity_pattern(position_dofs, same_component, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, communicator, relevant_dofs);
+    mass_pattern.reinit(owned_dofs, owned_dofs, dsp, communicator);
+
     position_ghosted.reinit(owned_dofs, relevant_dofs, communicator);
     derived_current = false;
     surface_mapping = std::make_unique<MappingFEField<2, 3, VectorType>>(position_dofs, position_ghosted);
@@ -416,10 +426,7 @@ namespace FluidSurface
                                              VectorType                     &rhs_curvature,
                                              VectorType                     &rhs_normal) const
   {
-    DynamicSparsityPattern dsp(relevant_dofs);
-    DoFTools::make_sparsity_pattern(position_dofs, dsp, constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, communicator, relevant_dofs);
-    mass.reinit(owned_dofs, owned_dofs, dsp, communicator);
+    mass.reinit(mass_pattern);
     rhs_curvature.reinit(owned_dofs, communicator);
     rhs_normal.reinit(owned_dofs, communicator);
 
@@ -431,6 +438,9 @@ namespace FluidSurface
     FullMatrix<double>                   cell_mass(n, n);
     Vector<double>                       cell_rhs_curvature(n), cell_rhs_normal(n);
     std::vector<types::global_dof_index> indices(n);
+    std::vector<unsigned int>            component(n);
+    for (unsigned int i = 0; i < n; ++i)
+      component[i] = fe().system_to_component_index(i).first;
     for (const auto &cell : position_dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -449,7 +459,8 @@ namespace FluidSurface
                   cell_rhs_curvature(i) -= fe_values[vec].divergence(i, k) * dA;
                   cell_rhs_normal(i) += phi_i * nu * dA;
                   for (unsigned int j = 0; j < n; ++j)
-                    cell_mass(i, j) += phi_i * fe_values[vec].value(j, k) * dA;
+                    if (component[j] == component[i])
+                      cell_mass(i, j) += fe_values.shape_value(i, k) * fe_values.shape_value(j, k) * dA;
                 }
             }
           cell->get_dof_indices(indices);

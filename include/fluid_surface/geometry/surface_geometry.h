@@ -11,6 +11,7 @@
 #include <deal.II/fe/mapping_fe_field.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <fluid_surface/base/types.h>
@@ -273,6 +274,8 @@ namespace FluidSurface
     dealii::IndexSet                                  owned_dofs;
     dealii::IndexSet                                  relevant_dofs;
     dealii::AffineConstraints<double>                 constraints;
+    /// The sparsity of the mass matrix of [Q_k]³ (components uncoupled), built with the DoFs.
+    dealii::TrilinosWrappers::SparsityPattern mass_pattern;
 
     VectorType position_ghosted;
     /// The curvature of position_ghosted, once asked for (curvature()).
