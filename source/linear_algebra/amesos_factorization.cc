@@ -34,6 +34,20 @@ namespace FluidSurface
       {
         MDS.cntl[position - 1] = value;
       }
+
+      /// Solves in place for the @p n_columns columns of @p columns (column-major, leading dimension
+      /// @p n_rows) in one MUMPS solve phase; one process only. Returns MUMPS' INFO(1).
+      int
+      solve_columns(double *columns, const int n_rows, const int n_columns)
+      {
+        MDS.job  = 3;
+        MDS.nrhs = n_columns;
+        MDS.lrhs = n_rows;
+        MDS.rhs  = columns;
+        dmumps_c(&MDS);
+        MDS.nrhs = 1;
+        return MDS.info[0];
+      }
     };
 
     /// A hash of the global (row, column) pairs of the locally owned rows of @p matrix.
@@ -155,6 +169,48 @@ namespace FluidSurface
     problem->SetRHS(const_cast<Epetra_MultiVector *>(static_cast<const Epetra_MultiVector *>(&src.trilinos_vector())));
     const int ierr = solver->Solve();
     AssertThrow(ierr == 0, ExcTrilinosError(ierr));
+  }
+
+  void
+  AmesosFactorization::solve(std::vector<TrilinosWrappers::MPI::Vector>        &dst,
+                             const std::vector<const TrilinosWrappers::MPI::Vector *> &src,
+                             const ChangeOfVariables                          *change)
+  {
+    Assert(factorized, ExcNotInitialized());
+    const unsigned int n_columns = src.size();
+    dst.resize(n_columns);
+    for (unsigned int k = 0; k < n_columns; ++k)
+      {
+        dst[k].reinit(*src[k], true);
+        dst[k] = *src[k];
+        if (change != nullptr)
+          (*change)(dst[k], true);
+      }
+    auto *mumps = dynamic_cast<MumpsSolver *>(solver.get());
+    if (mumps == nullptr || comm->NumProc() != 1 || n_columns < 2)
+      for (auto &column : dst)
+        {
+          const TrilinosWrappers::MPI::Vector right_hand_side(column);
+          solve(column, right_hand_side);
+        }
+    else
+      {
+        // MUMPS' solve phase for all columns at once (Amesos_Mumps::Solve loops over them): the forward and
+        // backward substitutions become matrix-matrix products.
+        const int           n_rows = dst[0].locally_owned_size();
+        std::vector<double> columns(static_cast<std::size_t>(n_rows) * n_columns);
+        for (unsigned int k = 0; k < n_columns; ++k)
+          std::copy(dst[k].begin(), dst[k].end(), columns.begin() + static_cast<std::size_t>(k) * n_rows);
+        const int info = mumps->solve_columns(columns.data(), n_rows, n_columns);
+        AssertThrow(info == 0, ExcMessage("MUMPS' solve phase failed with INFO(1) = " + std::to_string(info)));
+        for (unsigned int k = 0; k < n_columns; ++k)
+          std::copy(columns.begin() + static_cast<std::size_t>(k) * n_rows,
+                    columns.begin() + static_cast<std::size_t>(k + 1) * n_rows,
+                    dst[k].begin());
+      }
+    if (change != nullptr)
+      for (auto &column : dst)
+        (*change)(column, false);
   }
 
   void

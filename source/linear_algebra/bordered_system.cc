@@ -105,12 +105,7 @@ namespace FluidSurface
       z = kept->z;
     else
       {
-        z.resize(n);
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            z[k].reinit(*system.columns[k], true);
-            factorization->solve(z[k], *system.columns[k], change);
-          }
+        factorization->solve(z, system.columns, change);
         if (kept != nullptr)
           *kept = {z, factors.n_numeric_factorizations(), true};
       }

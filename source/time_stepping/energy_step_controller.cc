@@ -40,7 +40,10 @@ namespace FluidSurface
               tau_before_rejections = tau;
             previous_rate = rate;
             std::ostringstream reason;
-            reason << "energy " << std::setprecision(10) << old_energy << " → " << new_energy;
+            // A step that blew up gets 4 digits: they are all of it that does not depend on rounding.
+            const bool blown_up = !(std::abs(rise) < std::abs(old_energy));
+            reason << "energy " << std::setprecision(10) << old_energy << " → " << std::setprecision(blown_up ? 4 : 10)
+                   << new_energy;
             decision.verdict = Verdict::reject;
             decision.reason  = reason.str();
             return decision;

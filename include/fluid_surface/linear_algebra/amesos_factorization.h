@@ -73,6 +73,11 @@ namespace FluidSurface
           const dealii::TrilinosWrappers::MPI::Vector &src,
           const ChangeOfVariables                     *change);
 
+    /// dst[k] = T (LU)⁻¹ Tᵀ src[k] for all k; with Amesos_Mumps on one process in one solve phase.
+    void
+    solve(std::vector<dealii::TrilinosWrappers::MPI::Vector>              &dst,
+          const std::vector<const dealii::TrilinosWrappers::MPI::Vector *> &src,
+          const ChangeOfVariables                                          *change);
     /// Whether factorize() succeeded since construction or the last failure.
     bool
     has_factors() const
