@@ -47,6 +47,18 @@ namespace FluidSurface
                       "0.05",
                       RealRange::at_least(1e-12),
                       "τ_max ≥ 1e-12: the largest step the controller takes.");
+    prm.declare_entry("relaxation end time",
+                      "0",
+                      RealRange::at_least(0),
+                      "t_r ≥ 0: until t_r, τ ≤ 'relaxation maximum time step' τ_r instead of τ_max (τ grows to τ_max "
+                      "after t_r by 'growth factor'). For a relaxation whose oscillations a step of τ_max would damp: "
+                      "BDF2 damps a mode of frequency ν at the rate ≈ ν⁴τ³/4 (the oblate's breathing, ν ≈ 22, at "
+                      "0.014 per unit time with τ = 0.00625 against its own 0.29; doc/scheme.md, \"The breathing "
+                      "of the relaxation\"). 0: τ_max throughout.");
+    prm.declare_entry("relaxation maximum time step",
+                      "0.00625",
+                      RealRange::at_least(1e-12),
+                      "τ_r ≥ 1e-12, τ_min ≤ τ_r ≤ τ_max: the largest step before 'relaxation end time' t_r.");
     prm.declare_entry("growth factor",
                       "1.25",
                       RealRange::above(1),
@@ -112,6 +124,8 @@ namespace FluidSurface
     adaptive                  = prm.get_bool("adaptive");
     tau_min                   = prm.get_double("minimum time step");
     tau_max                   = prm.get_double("maximum time step");
+    relaxation_end_time       = prm.get_double("relaxation end time");
+    relaxation_tau_max        = prm.get_double("relaxation maximum time step");
     growth                    = prm.get_double("growth factor");
     shrink                    = prm.get_double("shrink factor");
     easy_steps                = prm.get_integer("easy steps before growth");
@@ -136,6 +150,10 @@ namespace FluidSurface
       throw_invalid_entry("time stepping/minimum time step",
                           prm.get("minimum time step"),
                           "a value not larger than 'maximum time step' = " + prm.get("maximum time step"));
+    if (relaxation_end_time > 0 && !(tau_min <= relaxation_tau_max && relaxation_tau_max <= tau_max))
+      throw_invalid_entry("time stepping/relaxation maximum time step",
+                          prm.get("relaxation maximum time step"),
+                          "τ_min ≤ τ_r ≤ τ_max = " + prm.get("maximum time step") + " (relaxation end time > 0)");
     if (tau > tau_max && adaptive)
       throw_invalid_entry("time stepping/time step",
                           prm.get("time step"),
@@ -147,6 +165,8 @@ namespace FluidSurface
     prm.leave_subsection();
     current_time = 0;
     n_accepted = n_rejected = n_easy = 0;
+    if (adaptive)
+      tau = std::min(tau, largest_step());
   }
 
   TimeStepper::ConstantSteps
@@ -204,7 +224,7 @@ namespace FluidSurface
       }
     if (adaptive && ++n_easy >= easy_steps)
       {
-        tau    = std::min(tau * growth, tau_max);
+        tau    = std::min(tau * growth, largest_step());
         n_easy = 0;
       }
   }

@@ -135,11 +135,18 @@ namespace FluidSurface
     double
     error_step_factor(const double error) const;
 
-    /// Sets τ for the next step (clipped to [τ_min, τ_max]).
+    /// Sets τ for the next step (clipped to [τ_min, largest_step()]).
     void
     set_step_size(const double new_tau)
     {
-      tau = std::min(std::max(new_tau, tau_min), tau_max);
+      tau = std::min(std::max(new_tau, tau_min), largest_step());
+    }
+
+    /// The largest step at the current time: τ_r of `relaxation maximum time step` before t_r, else τ_max.
+    double
+    largest_step() const
+    {
+      return current_time < relaxation_end_time ? std::min(relaxation_tau_max, tau_max) : tau_max;
     }
 
     /**
@@ -195,6 +202,8 @@ namespace FluidSurface
     double       tau; ///< τ for the next step
     double       tau_min;
     double       tau_max;
+    double       relaxation_end_time = 0; ///< t_r of `relaxation end time`
+    double       relaxation_tau_max  = 0; ///< τ_r of `relaxation maximum time step`
     double       growth;
     double       shrink;
     unsigned int easy_steps;
