@@ -60,7 +60,10 @@ namespace FluidSurface
     lagged_fields = lagged;
     const SurfaceGeometry &geometry = system.geometry();
     start_position.reinit(geometry.locally_owned_dofs(), geometry.locally_relevant_dofs(), geometry.get_communicator());
-    start_position = system.new_position(start);
+    // From the ghosted copy (a geometry DoF this rank owns may sit on a flow DoF another rank owns), and through a
+    // named vector: a move assignment would hand start_position the owned layout without its ghosts.
+    const VectorType owned_start_position = system.new_position(start_fields);
+    start_position                        = owned_start_position;
     StepStart result{tau * (1 + omega) / (1 + 2 * omega), start_position, start_fields, lagged_fields, true};
     if (predictor != GeometryIteration::Predictor::old_surface)
       result.predicted = quadratic_predictor() && earlier_step > 0 ?

@@ -156,7 +156,8 @@ namespace FluidSurface
     /// Y of @p flow_vector → the geometry's position field.
     void
     copy_new_position_to_geometry(const VectorType &flow_vector) const;
-    /// Y of @p flow_vector in the geometry numbering (owned).
+    /// Y of @p flow_vector (ghosted: a geometry DoF this rank owns may sit on a flow DoF another rank owns) in the
+    /// geometry numbering (owned).
     VectorType
     new_position(const VectorType &flow_vector) const;
     /// The position @p x (geometry numbering) → the Y components of @p flow_vector (owned).
