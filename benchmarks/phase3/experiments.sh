@@ -5,12 +5,15 @@
 # their steady state). Copies each run's statistics and summary to experiments/<name>.* and writes experiments.csv.
 #   benchmarks/phase3/experiments.sh [NAMES]        from the repository root, after building
 #   benchmarks/phase3/experiments.sh --table        only rebuild experiments.csv from experiments/
-# NAMES (default "oblate prolate oblate_long prolate_long") selects prm files; EXE the binary; the runs write to
-# results/<name> as the prm files say (resume = auto in the long ones continues a stopped run).
+# NAMES (default "oblate prolate oblate_long prolate_long") selects prm files; EXE the binary; RANKS (default 1) the
+# number of MPI processes (mpirun -np RANKS); the runs write to results/<name> as the prm files say (resume = auto
+# in the long ones continues a stopped run).
 set -u
 cd "$(dirname "$0")/../.."
 here=benchmarks/phase3
 exe=${EXE:-./build/fluid_surface}
+ranks=${RANKS:-1}
+[ "$ranks" -gt 1 ] && exe="mpirun --allow-run-as-root -np $ranks $exe"
 mkdir -p $here/experiments
 names=${1:-oblate prolate oblate_long prolate_long}; [ "$names" = --table ] && names=
 for name in $names; do
