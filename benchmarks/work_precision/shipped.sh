@@ -45,33 +45,5 @@ for tau in $taus; do
   [ -f "$work/$name/summary" ] && cp "$work/$name/summary" "$out/$name.summary"
   names="$names $name"
 done
-/usr/bin/python3 - "$out" ${shape}_r${r}${tag}_tau$reference $names > "$out/../shipped_${shape}_r${r}${tag}.csv" <<'PY'
-import os, sys
-out, reference, names = sys.argv[1], sys.argv[2], sys.argv[3:]
-def summary(name):
-    values = {}
-    try:
-        for line in open(os.path.join(out, name + ".summary")):
-            if ": " in line:
-                key, value = line.split(": ", 1)
-                values[key.strip()] = value.strip()
-    except OSError:
-        pass
-    return values
-keys = [("t_sym_1e-4", "t_sym_1e-4"), ("t_sym_1e-2", "t_sym_1e-2"), ("mean angular velocity", "mean omega"),
-        ("final total energy", "final F")]
-ref = summary(reference)
-print("run,status,steps,rejected,LU factorizations,wall s," + ",".join(f"{k},{k} vs reference" for _, k in keys))
-for name in names:
-    s = summary(name)
-    cells = [name, s.get("status", "missing").split(":")[0], s.get("steps", ""), s.get("rejected steps", ""),
-             s.get("LU factorizations", ""), s.get("wall time", "")]
-    for key, _ in keys:
-        try:
-            value, r = float(s[key]), float(ref[key])
-            cells += [s[key], f"{(value - r) / abs(r):+.2e}"]
-        except (KeyError, ValueError):
-            cells += [s.get(key, ""), ""]
-    print(",".join(cells))
-PY
+/usr/bin/python3 $here/compare.py "$out" ${shape}_r${r}${tag}_tau$reference $names > "$out/../shipped_${shape}_r${r}${tag}.csv"
 cat "$out/../shipped_${shape}_r${r}${tag}.csv"
