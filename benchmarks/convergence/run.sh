@@ -38,6 +38,8 @@ write_prm() {
   local tau_max
   tau_max=$(awk -v f="$factor" '/maximum time step/ { print $NF * f; exit }' prm/$prm.prm)
   {
+    # the included file's checksum: a run of an older prm/$prm.prm is not kept
+    echo "# prm/$prm.prm $(sha1sum < prm/$prm.prm | cut -c1-16)"
     echo "include $PWD/prm/$prm.prm"
     echo "subsection geometry"; echo "  set refinement = $level"; echo "end"
     echo "subsection time stepping"
