@@ -2,9 +2,11 @@
 // time stepping/relaxation end time t_r and relaxation maximum time step τ_r: every step that starts before t_r is
 // at most τ_r (also the first, whose `time step` is larger, and a step proposed by the error control); after t_r τ
 // grows by the growth factor, never faster (BDF2's step ratio stays ≤ 2), up to τ_max. τ_r outside [τ_min, τ_max]
-// is refused with the entry's name; t_r = 0 gives the steps of a run without these entries.
+// is refused with the entry's name; t_r = 0 gives the steps of a run without these entries. A run resumed before t_r
+// from a checkpoint written with a larger step starts at τ_r.
 #include <deal.II/base/parameter_handler.h>
 
+#include <fluid_surface/io/checkpoint.h>
 #include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/time_stepping/time_stepper.h>
 
@@ -68,6 +70,19 @@ main()
   controlled.accept(controlled.step_size(), 0);
   std::cout << "error control, after an error-free step at t = " << controlled.time() << ": τ = "
             << controlled.step_size() << std::endl;
+
+  // A checkpoint at t = 0.2 with τ = 0.1 (written without t_r), resumed with t_r = 0.3 and τ_r = 0.005.
+  TimeStepper unbounded = stepper("");
+  while (unbounded.time() < 0.2 - 1e-12)
+    unbounded.accept(std::min(unbounded.step_size(), 0.2 - unbounded.time()));
+  for (unsigned int i = 0; i < 10; ++i)
+    unbounded.set_step_size(0.1);
+  CheckpointData checkpoint;
+  unbounded.save(checkpoint);
+  TimeStepper resumed = stepper("  set relaxation end time = 0.3\n  set relaxation maximum time step = 0.005\n");
+  resumed.load(checkpoint);
+  std::cout << "checkpoint at t = " << unbounded.time() << " with τ = " << unbounded.step_size()
+            << ", resumed with τ_r = 0.005: τ = " << resumed.step_size() << std::endl;
 
   for (const std::string value : {"0.2", "1e-8"})
     try

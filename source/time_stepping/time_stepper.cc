@@ -264,5 +264,8 @@ namespace FluidSurface
                data.get_unsigned("time stepping/steps"),
                data.get_unsigned("time stepping/rejected steps"),
                data.get_unsigned("time stepping/easy steps")});
+    // A run resumed with a smaller τ_max or τ_r than the one that wrote the checkpoint starts at this run's bound.
+    if (adaptive)
+      tau = std::min(tau, largest_step());
   }
 } // namespace FluidSurface

@@ -146,7 +146,7 @@ namespace FluidSurface
     double
     largest_step() const
     {
-      return current_time < relaxation_end_time ? std::min(relaxation_tau_max, tau_max) : tau_max;
+      return current_time < relaxation_end_time ? relaxation_tau_max : tau_max;
     }
 
     /**
