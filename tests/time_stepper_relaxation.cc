@@ -75,8 +75,7 @@ main()
   TimeStepper unbounded = stepper("");
   while (unbounded.time() < 0.2 - 1e-12)
     unbounded.accept(std::min(unbounded.step_size(), 0.2 - unbounded.time()));
-  for (unsigned int i = 0; i < 10; ++i)
-    unbounded.set_step_size(0.1);
+  unbounded.set_step_size(0.1);
   CheckpointData checkpoint;
   unbounded.save(checkpoint);
   TimeStepper resumed = stepper("  set relaxation end time = 0.3\n  set relaxation maximum time step = 0.005\n");
