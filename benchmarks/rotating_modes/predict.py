@@ -8,6 +8,7 @@ y' = lambda*y, lambda = sigma + i*nu_seen.  Per step the amplitude is multiplied
   BE:   z = 1/(1 - lambda*tau)
   BDF2: (3/2 z^2 - 2 z + 1/2)/tau = lambda z^2  ->  (3 - 2 lambda tau) z^2 - 4 z + 1 = 0,
         principal root z = (2 + sqrt(1 + 2 lambda tau)) / (3 - 2 lambda tau)   (z -> 1 as tau -> 0)
+  SDIRK2 (gamma = 1 - 1/sqrt(2)): z = (1 + (1 - 2 gamma) lambda tau) / (1 - gamma lambda tau)^2
 and the measured rate is ln|z| / tau.
 
 nu_seen:
@@ -34,6 +35,13 @@ def rate_be(lam, tau):
 
 def rate_bdf2(lam, tau):
     z = (2.0 + cmath.sqrt(1.0 + 2.0 * lam * tau)) / (3.0 - 2.0 * lam * tau)
+    return math.log(abs(z)) / tau
+
+
+def rate_sdirk2(lam, tau):
+    # the two-stage L-stable SDIRK of order 2, gamma = 1 - 1/sqrt(2): z = (1 + (1 - 2 gamma) l t)/(1 - gamma l t)^2
+    gamma = 1.0 - 1.0 / math.sqrt(2.0)
+    z = (1.0 + (1.0 - 2.0 * gamma) * lam * tau) / (1.0 - gamma * lam * tau) ** 2
     return math.log(abs(z)) / tau
 
 

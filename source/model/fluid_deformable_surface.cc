@@ -412,14 +412,15 @@ namespace FluidSurface
   void
   FluidDeformableSurface::set_time_scheme(const TimeScheme::Kind kind, const TimeScheme::Frame frame)
   {
-    const bool on = kind == TimeScheme::Kind::bdf2;
+    const bool on = kind != TimeScheme::Kind::backward_euler;
     const GeometryIteration &iteration = step.components().geometry_iteration;
     if (on && !(iteration.enabled() && iteration.apply == GeometryIteration::Apply::always &&
                 iteration.time_level == 1))
       throw_invalid_entry("time stepping/scheme",
-                          "BDF2",
+                          kind == TimeScheme::Kind::bdf2 ? "BDF2" : "SDIRK2",
                           "'backward Euler', or 'geometry iteration/maximum iterations' ≥ 1 with apply = always and "
-                          "time level = 1 (BDF2 needs the geometry of t + τ; a lagged geometry is first order)");
+                          "time level = 1 (a second-order scheme needs the geometry of its new time level; a lagged "
+                          "geometry is first order)");
     step.set_time_scheme(kind, frame);
   }
 } // namespace FluidSurface

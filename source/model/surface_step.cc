@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 namespace FluidSurface
@@ -388,55 +389,67 @@ namespace FluidSurface
                                              RigidMotion();
     const bool carried_frame = co_rotating || (reference && redistribution.follow_rigid_motion);
     // X^m: the accepted state's surface; the valve's solves move the geometry itself between them.
-    TimeScheme     &scheme = flow_step && request.global_constraints ? *time_scheme : backward_euler;
-    const StepStart start  = scheme.start(
-      flow_step ? state.position : geometry.position(), state.solution, system, motion, carried_frame, tau);
-    // The mesh moves along with the rigid motion R of the shape (fit of u^m·ν): law bgn relaxes towards
-    // X^m + τR, law reference carries the nodes by the rotation itself.
-    const bool carry =
-      co_rotating || (redistribution.follow_rigid_motion && (reference || redistribution.damping(start.tau) > 0));
+    TimeScheme &scheme = flow_step && request.global_constraints ? *time_scheme : backward_euler;
+    std::optional<StepStart> start;
+    start.emplace(scheme.start(
+      flow_step ? state.position : geometry.position(), state.solution, system, motion, carried_frame, tau));
     const SurfaceGeometry::Measures old_measures = geometry.measure();
     const SurfaceGeometry::Curvature old_curvature = geometry.curvature(); // of S^m (the geometry may be iterated)
     // The valve's relaxation solves (velocity at rest) always pull with full weight.
     const double membrane_weight =
       flow_step ? membrane_pull.flow_step_weight(redistribution, old_measures.mesh_quality) : 1.0;
-    StepUnderWay step{request,
-                      tau,
-                      start,
-                      motion,
-                      carry ? motion : RigidMotion(),
-                      carried_frame,
-                      co_rotating,
-                      old_measures,
-                      old_curvature,
-                      membrane_weight,
-                      StepAssembly(parts, request, co_rotating, system),
-                      {},
-                      old_curvature};
     const bool iterating = corrected_steps.iterating(parts.geometry_iteration) &&
                            request.prescribed_velocity() == nullptr && request.global_constraints;
-    // The first solve of an iterated BDF2 step on the extrapolated surface, of second order: one correction from
-    // there leaves an O(τ³) or O(τ²) geometry, one from S^m an O(τ) one (doc/scheme.md, "Second order in time").
-    const VectorType *extrapolated = iterating ? start.predicted : nullptr;
-    const bool predicted = extrapolated != nullptr;
-    {
-      TimerSection section(step_timer, "assembly");
-      if (predicted)
-        system.copy_new_position_to_geometry(*extrapolated);
-      assemble(step, geometry.normal_field());
-    }
-    set_up_global_constraints(step, step.constraints);
-    set_constraint_values(predicted ? rigid_motion(request, state.solution).momenta : motion.momenta, step.constraints);
-    BorderedSystem::BlockVector solution = bordered_solver.initial_guess(
-      BorderedSystem(system.matrix(), step.constraints.columns, step.constraints.rows),
-      system.rhs(),
-      step.constraints.columns.size());
-    if (!solve(step, solution, result))
-      return result;
-    if (iterating && !iterate_geometry(step, solution, result))
-      return result;
-    finish(step, solution.block(0), result);
-    return result;
+    // The stages of the step (one but for SDIRK2), each a backward-Euler solve in the frame of the step.
+    for (unsigned int stage = 0;; ++stage)
+      {
+        // The mesh moves along with the rigid motion R of the shape (fit of u^m·ν): law bgn relaxes towards
+        // X^m + τR, law reference carries the nodes by the rotation itself.
+        const bool carry =
+          co_rotating || (redistribution.follow_rigid_motion && (reference || redistribution.damping(start->tau) > 0));
+        StepUnderWay step{request,
+                          scheme.stage_time(stage, tau),
+                          *start,
+                          motion,
+                          carry ? motion : RigidMotion(),
+                          carried_frame,
+                          co_rotating,
+                          old_measures,
+                          old_curvature,
+                          membrane_weight,
+                          StepAssembly(parts, request, co_rotating, system),
+                          {},
+                          old_curvature};
+        // The first solve of an iterated BDF2 step on the extrapolated surface, of second order: one correction
+        // from there leaves an O(τ³) or O(τ²) geometry, one from S^m an O(τ) one (doc/scheme.md, "Second order in
+        // time").
+        const VectorType *extrapolated = iterating ? start->predicted : nullptr;
+        const bool        predicted    = extrapolated != nullptr;
+        {
+          TimerSection section(step_timer, "assembly");
+          if (predicted)
+            system.copy_new_position_to_geometry(*extrapolated);
+          assemble(step, geometry.normal_field());
+        }
+        set_up_global_constraints(step, step.constraints);
+        set_constraint_values(predicted ? rigid_motion(request, state.solution).momenta : motion.momenta,
+                              step.constraints);
+        BorderedSystem::BlockVector solution = bordered_solver.initial_guess(
+          BorderedSystem(system.matrix(), step.constraints.columns, step.constraints.rows),
+          system.rhs(),
+          step.constraints.columns.size());
+        if (!solve(step, solution, result))
+          return result;
+        if (iterating && !iterate_geometry(step, solution, result))
+          return result;
+        if (stage + 1 == scheme.n_stages())
+          {
+            finish(step, solution.block(0), result);
+            return result;
+          }
+        restore_old_geometry();
+        start.emplace(scheme.next_stage(stage + 1, solution.block(0), system, motion, carried_frame, tau));
+      }
   }
 
   double

@@ -4,6 +4,9 @@
 #include <fluid_surface/model/step_system.h>
 #include <fluid_surface/model/time_scheme.h>
 
+#include <cmath>
+#include <stdexcept>
+
 namespace FluidSurface
 {
   using namespace dealii;
@@ -14,11 +17,24 @@ namespace FluidSurface
     std::unique_ptr<TimeScheme> scheme;
     if (kind == Kind::bdf2)
       scheme = std::make_unique<VariableBDF2>(predictor);
+    else if (kind == Kind::sdirk2)
+      scheme = std::make_unique<SDIRK2>(predictor);
     else
       scheme = std::make_unique<BackwardEuler>();
     if (frame == Frame::tisserand)
       return std::make_unique<CoRotatingFrame>(std::move(scheme));
     return scheme;
+  }
+
+  StepStart
+  TimeScheme::next_stage(const unsigned int,
+                         const VectorType &,
+                         const StepSystem &,
+                         const RigidMotion &,
+                         const bool,
+                         const double)
+  {
+    throw std::logic_error("A time scheme of one stage has no next stage.");
   }
 
   StepStart
@@ -40,20 +56,14 @@ namespace FluidSurface
                       const bool         carried_frame,
                       const double       tau)
   {
-    if (previous_step == 0 || backward_euler_steps > 0)
+    if (backward_euler_step())
       return first_step.start(old_position, old_fields, system, carried, carried_frame, tau);
-    // x̃^{m−1}: the previous state in the frame of the step (law reference: frame coordinates at t^m − τ_p,
-    // i.e. carried forward by τ_p; otherwise the previous state itself).
-    VectorType previous = system.owned_vector();
-    previous            = previous_solution;
-    if (carried_frame)
-      system.carry_fields(carried, previous_step, previous);
+    const VectorType previous = previous_in_frame(system, carried, carried_frame);
     const double omega = tau / previous_step, alpha0 = (1 + 2 * omega) / (1 + omega);
-    VectorType   start = system.owned_vector(), lagged = system.owned_vector();
-    start  = old_fields;
-    lagged = start;
+    VectorType   start = system.owned_vector();
+    start              = old_fields;
     start.sadd((1 + omega) / alpha0, -omega * omega / ((1 + omega) * alpha0), previous);
-    lagged.sadd(1 + omega, -omega, previous);
+    const VectorType lagged = extrapolation(old_fields, previous, system, tau);
     start_fields  = system.ghosted_vector();
     lagged_fields = system.ghosted_vector();
     start_fields  = start;
@@ -106,14 +116,34 @@ namespace FluidSurface
     return quadratic_fields;
   }
 
-  void
-  VariableBDF2::accept(const VectorType &old_fields, const StepSystem &system, const double tau)
+  VectorType
+  PreviousStateScheme::previous_in_frame(const StepSystem  &system,
+                                         const RigidMotion &carried,
+                                         const bool         carried_frame) const
   {
-    if (previous_step > 0 && quadratic_predictor())
-      {
-        earlier_solution = previous_solution;
-        earlier_step     = previous_step;
-      }
+    VectorType previous = system.owned_vector();
+    previous            = previous_solution;
+    if (carried_frame)
+      system.carry_fields(carried, previous_step, previous);
+    return previous;
+  }
+
+  VectorType
+  PreviousStateScheme::extrapolation(const VectorType &old_fields,
+                                     const VectorType &previous,
+                                     const StepSystem &system,
+                                     const double      theta) const
+  {
+    const double omega  = theta / previous_step;
+    VectorType   result = system.owned_vector();
+    result              = old_fields;
+    result.sadd(1 + omega, -omega, previous);
+    return result;
+  }
+
+  void
+  PreviousStateScheme::accept(const VectorType &old_fields, const StepSystem &system, const double tau)
+  {
     previous_solution = system.ghosted_vector();
     previous_solution = old_fields;
     previous_step     = tau;
@@ -122,7 +152,7 @@ namespace FluidSurface
   }
 
   void
-  VariableBDF2::save(CheckpointData &data, const StepSystem &system) const
+  PreviousStateScheme::save(CheckpointData &data, const StepSystem &system) const
   {
     if (backward_euler_steps > 0)
       data.set("model/backward Euler steps", static_cast<double>(backward_euler_steps));
@@ -130,7 +160,36 @@ namespace FluidSurface
       return;
     data.set("model/previous step", previous_step);
     data.set_fields("previous state", system.dof_handler(), {&previous_solution});
-    if (earlier_step == 0)
+  }
+
+  void
+  PreviousStateScheme::load(const CheckpointData &data, const StepSystem &system)
+  {
+    previous_step = 0;
+    backward_euler_steps =
+      data.has("model/backward Euler steps") ? static_cast<unsigned int>(data.get_double("model/backward Euler steps")) : 0;
+    if (!data.has("model/previous step"))
+      return;
+    previous_solution = system.read_field(data, "previous state");
+    previous_step     = data.get_double("model/previous step");
+  }
+
+  void
+  VariableBDF2::accept(const VectorType &old_fields, const StepSystem &system, const double tau)
+  {
+    if (previous_step > 0 && quadratic_predictor())
+      {
+        earlier_solution = previous_solution;
+        earlier_step     = previous_step;
+      }
+    PreviousStateScheme::accept(old_fields, system, tau);
+  }
+
+  void
+  VariableBDF2::save(CheckpointData &data, const StepSystem &system) const
+  {
+    PreviousStateScheme::save(data, system);
+    if (previous_step == 0 || earlier_step == 0)
       return;
     data.set("model/earlier step", earlier_step);
     data.set_fields("earlier state", system.dof_handler(), {&earlier_solution});
@@ -139,17 +198,74 @@ namespace FluidSurface
   void
   VariableBDF2::load(const CheckpointData &data, const StepSystem &system)
   {
-    previous_step = 0;
-    earlier_step  = 0;
-    backward_euler_steps =
-      data.has("model/backward Euler steps") ? static_cast<unsigned int>(data.get_double("model/backward Euler steps")) : 0;
-    if (!data.has("model/previous step"))
-      return;
-    previous_solution = system.read_field(data, "previous state");
-    previous_step     = data.get_double("model/previous step");
-    if (!quadratic_predictor() || !data.has("model/earlier step"))
+    PreviousStateScheme::load(data, system);
+    earlier_step = 0;
+    if (previous_step == 0 || !quadratic_predictor() || !data.has("model/earlier step"))
       return;
     earlier_solution = system.read_field(data, "earlier state");
     earlier_step     = data.get_double("model/earlier step");
+  }
+
+  const double SDIRK2::gamma = 1 - 1 / std::sqrt(2.0);
+
+  StepStart
+  SDIRK2::start(const VectorType  &old_position,
+                const VectorType  &old_fields,
+                const StepSystem  &system,
+                const RigidMotion &carried,
+                const bool         carried_frame,
+                const double       tau)
+  {
+    stages = falling_back() ? 1 : 2;
+    if (stages == 1)
+      return first_step.start(old_position, old_fields, system, carried, carried_frame, tau);
+    old_solution  = system.ghosted_vector();
+    old_solution  = old_fields;
+    lagged_fields = system.ghosted_vector();
+    if (previous_step > 0)
+      {
+        previous                = previous_in_frame(system, carried, carried_frame);
+        const VectorType lagged = extrapolation(old_fields, previous, system, gamma * tau);
+        lagged_fields           = lagged;
+      }
+    else
+      lagged_fields = old_fields;
+    StepStart result{gamma * tau, old_position, old_solution, lagged_fields, true};
+    if (predictor != GeometryIteration::Predictor::old_surface && previous_step > 0)
+      result.predicted = &lagged_fields;
+    return result;
+  }
+
+  StepStart
+  SDIRK2::next_stage(const unsigned int stage,
+                     const VectorType  &stage_fields,
+                     const StepSystem  &system,
+                     const RigidMotion &,
+                     const bool,
+                     const double tau)
+  {
+    Assert(stage == 1 && stages == 2, ExcInternalError());
+    (void)stage;
+    // x̂₂ = x^m + ((1−γ)/γ)(Y₁ − x^m): the backward-Euler form of x^{m+1} = x^m + τ((1−γ)f(Y₁) + γf(x^{m+1})).
+    VectorType start = system.owned_vector();
+    start            = old_solution;
+    start.sadd(1 - (1 - gamma) / gamma, (1 - gamma) / gamma, stage_fields);
+    VectorType lagged = system.owned_vector();
+    if (previous_step > 0)
+      lagged = extrapolation(old_solution, previous, system, tau);
+    else
+      lagged = stage_fields; // Y₁ at t^m + γτ
+    start_fields  = system.ghosted_vector();
+    lagged_fields = system.ghosted_vector();
+    start_fields  = start;
+    lagged_fields = lagged;
+    const SurfaceGeometry &geometry = system.geometry();
+    start_position.reinit(geometry.locally_owned_dofs(), geometry.locally_relevant_dofs(), geometry.get_communicator());
+    const VectorType owned_start_position = system.new_position(start_fields);
+    start_position                        = owned_start_position;
+    StepStart result{gamma * tau, start_position, start_fields, lagged_fields, true};
+    if (predictor != GeometryIteration::Predictor::old_surface)
+      result.predicted = &lagged_fields;
+    return result;
   }
 } // namespace FluidSurface

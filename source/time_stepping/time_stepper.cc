@@ -82,12 +82,15 @@ namespace FluidSurface
                       "0: the step grows by 'growth factor' after easy steps.");
     prm.declare_entry("scheme",
                       "backward Euler",
-                      Patterns::Selection("backward Euler|BDF2"),
+                      Patterns::Selection("backward Euler|BDF2|SDIRK2"),
                       "The time discretization of the flow steps. backward Euler: first order. BDF2: variable-step "
                       "BDF2 (second order, L-stable; ω = τ/τ_p ≤ 2 by the controllers), u* = (1+ω)u^m − ωu^{m−1} "
                       "in the lagged convection; the first step and the first after a re-parametrization are "
-                      "backward Euler. Needs 'geometry iteration/maximum iterations' ≥ 1, apply = always and time "
-                      "level = 1 (a lagged geometry is first order; doc/scheme.md, \"Second order in time\").");
+                      "backward Euler. SDIRK2: the two-stage L-stable SDIRK method of order 2, γ = 1 − 1/√2, two "
+                      "solves per step; it damps a resolved oscillation of frequency ν by (γ⁴/2)(ντ)⁴ per step where "
+                      "BDF2 damps it by (ντ)⁴/4 (doc/scheme.md, \"SDIRK2\"). BDF2 and SDIRK2 need 'geometry "
+                      "iteration/maximum iterations' ≥ 1, apply = always and time level = 1 (a lagged geometry is "
+                      "first order; doc/scheme.md, \"Second order in time\").");
     prm.declare_entry("frame",
                       "lab",
                       Patterns::Selection("lab|Tisserand"),
@@ -101,9 +104,9 @@ namespace FluidSurface
     prm.declare_entry("backward Euler steps after rejection",
                       "0",
                       Patterns::Integer(0, 1000),
-                      "K, 0 ≤ K ≤ 1000, with scheme = BDF2: a step the energy check rejects is retried at the same τ "
-                      "as a backward-Euler step (L-stable, no history), and so are the next K accepted steps; then BDF2 "
-                      "resumes with the history of the last step. A second rejection within them shrinks τ as usual. "
+                      "K, 0 ≤ K ≤ 1000, with scheme = BDF2 or SDIRK2: a step the energy check rejects is retried at the "
+                      "same τ as a backward-Euler step (L-stable, no history), and so are the next K accepted steps; "
+                      "then the scheme resumes with the history of the last step. A second rejection within them shrinks τ as usual. "
                       "0: a rejected BDF2 step is retried with a smaller τ only (doc/scheme.md, \"Second order in "
                       "time\").");
     prm.declare_entry("energy tolerance",
@@ -131,7 +134,9 @@ namespace FluidSurface
     easy_steps                = prm.get_integer("easy steps before growth");
     relative_energy_tolerance = prm.get_double("energy tolerance");
     error_tolerance           = prm.get_double("error tolerance");
-    scheme_kind = prm.get("scheme") == "BDF2" ? TimeScheme::Kind::bdf2 : TimeScheme::Kind::backward_euler;
+    scheme_kind = prm.get("scheme") == "BDF2"   ? TimeScheme::Kind::bdf2 :
+                  prm.get("scheme") == "SDIRK2" ? TimeScheme::Kind::sdirk2 :
+                                                  TimeScheme::Kind::backward_euler;
     frame_kind  = prm.get("frame") == "Tisserand" ? TimeScheme::Frame::tisserand : TimeScheme::Frame::lab;
     fallback_steps = prm.get_integer("backward Euler steps after rejection");
     if (error_tolerance > 0 && !adaptive)

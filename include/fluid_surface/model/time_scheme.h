@@ -44,7 +44,8 @@ namespace FluidSurface
     enum class Kind
     {
       backward_euler,
-      bdf2
+      bdf2,
+      sdirk2
     };
     /// The frames of `time stepping/frame`.
     enum class Frame
@@ -71,8 +72,9 @@ namespace FluidSurface
 
     virtual ~TimeScheme() = default;
     /**
-     * The start of a step of size @p tau from X^m = @p old_position and x^m = @p old_fields. Law reference
-     * (@p carried_frame): the step is solved in the frame carried by the rigid motion @p carried.
+     * The start of a step of size @p tau from X^m = @p old_position and x^m = @p old_fields, i.e. of its first
+     * stage. Law reference (@p carried_frame): the step is solved in the frame carried by the rigid motion
+     * @p carried.
      */
     virtual StepStart
     start(const VectorType  &old_position,
@@ -81,6 +83,30 @@ namespace FluidSurface
           const RigidMotion &carried,
           const bool         carried_frame,
           const double       tau) = 0;
+    /// The number of solves (stages) of the step that start() began, each written in backward-Euler form.
+    virtual unsigned int
+    n_stages() const
+    {
+      return 1;
+    }
+    /// The time c_s τ at which stage @p stage of the step of size @p tau ends: the frame of its solve and the
+    /// time of its momentum targets.
+    virtual double
+    stage_time(const unsigned int /*stage*/, const double tau) const
+    {
+      return tau;
+    }
+    /**
+     * Stage @p stage ≥ 1 of the step of size @p tau begun by start(), from @p stage_fields, the solution of the
+     * stage before in the frame of the step (not carried out of it, not projected).
+     */
+    virtual StepStart
+    next_stage(const unsigned int stage,
+               const VectorType  &stage_fields,
+               const StepSystem  &system,
+               const RigidMotion &carried,
+               const bool         carried_frame,
+               const double       tau);
     /// The step of size @p tau from the accepted fields @p old_fields was accepted (called before they move on).
     virtual void
     accept(const VectorType &, const StepSystem &, const double)
@@ -148,6 +174,26 @@ namespace FluidSurface
     {
       return scheme->start(old_position, old_fields, system, carried, carried_frame, tau);
     }
+    unsigned int
+    n_stages() const override
+    {
+      return scheme->n_stages();
+    }
+    double
+    stage_time(const unsigned int stage, const double tau) const override
+    {
+      return scheme->stage_time(stage, tau);
+    }
+    StepStart
+    next_stage(const unsigned int stage,
+               const VectorType  &stage_fields,
+               const StepSystem  &system,
+               const RigidMotion &carried,
+               const bool         carried_frame,
+               const double       tau) override
+    {
+      return scheme->next_stage(stage, stage_fields, system, carried, carried_frame, tau);
+    }
     void
     accept(const VectorType &old_fields, const StepSystem &system, const double tau) override
     {
@@ -179,13 +225,72 @@ namespace FluidSurface
   };
 
   /**
+   * A scheme that keeps the previous accepted state x^{m−1} and the step τ_p that followed it (checkpoint keys
+   * `model/previous step`, `previous state`), for its extrapolations to the new time level: the lagged convection
+   * and the predicted geometry. Its steps are backward-Euler steps where there is no history (the first step,
+   * after a jump of the state) and after a rejection (fall_back_to_backward_euler()).
+   */
+  class PreviousStateScheme : public TimeScheme
+  {
+  public:
+    void
+    accept(const VectorType &old_fields, const StepSystem &system, const double tau) override;
+    void
+    forget_history() override
+    {
+      previous_step = 0;
+    }
+    bool
+    fall_back_to_backward_euler(const unsigned int steps) override
+    {
+      if (backward_euler_steps > 0)
+        return false;
+      backward_euler_steps = steps + 1; // the retry and the next `steps`
+      return true;
+    }
+    void
+    save(CheckpointData &data, const StepSystem &system) const override;
+    void
+    load(const CheckpointData &data, const StepSystem &system) override;
+
+  protected:
+    /// Whether the step under way is a backward-Euler step (no history, or after a rejection).
+    bool
+    backward_euler_step() const
+    {
+      return previous_step == 0 || falling_back();
+    }
+    /// Whether the step under way is one of the backward-Euler steps after a rejection.
+    bool
+    falling_back() const
+    {
+      return backward_euler_steps > 0;
+    }
+    /// x̃^{m−1}: the previous state in the frame of the step (law reference: frame coordinates at t^m − τ_p,
+    /// i.e. carried forward by τ_p; otherwise the previous state itself). Owned.
+    VectorType
+    previous_in_frame(const StepSystem &system, const RigidMotion &carried, const bool carried_frame) const;
+    /// The linear extrapolation x^m + (θ/τ_p)(x^m − x̃^{m−1}) of @p old_fields and @p previous to t^m + θ. Owned.
+    VectorType
+    extrapolation(const VectorType &old_fields, const VectorType &previous, const StepSystem &system, const double theta) const;
+
+    BackwardEuler first_step;
+    /// x^{m−1} (flow numbering, ghosted) and the step τ_p that followed it; τ_p = 0: none.
+    VectorType previous_solution;
+    double     previous_step = 0;
+
+  private:
+    /// Steps left that are taken as backward-Euler steps after a rejection (fall_back_to_backward_euler()).
+    unsigned int backward_euler_steps = 0;
+  };
+
+  /**
    * Variable-step BDF2 after a first backward-Euler step (and after each jump of the state), ω = τ/τ_p:
    * (α₀x − (1+ω)x^m + ω²/(1+ω)x^{m−1})/τ = f, α₀ = (1+2ω)/(1+ω), i.e. the backward-Euler form of size τ/α₀ from
-   * x̂ = ((1+ω)x^m − ω²/(1+ω)x^{m−1})/α₀, with the convection lagged at u* = (1+ω)u^m − ωu^{m−1}. Keeps x^{m−1}
-   * and τ_p (checkpoint keys `model/previous step`, `previous state`), and for a quadratic predictor x^{m−2} and
-   * τ_pp (`model/earlier step`, `earlier state`).
+   * x̂ = ((1+ω)x^m − ω²/(1+ω)x^{m−1})/α₀, with the convection lagged at u* = (1+ω)u^m − ωu^{m−1}. For a quadratic
+   * predictor it keeps x^{m−2} and τ_pp too (`model/earlier step`, `earlier state`).
    */
-  class VariableBDF2 : public TimeScheme
+  class VariableBDF2 : public PreviousStateScheme
   {
   public:
     /// BDF2 whose StepStart::predicted is by @p predictor.
@@ -205,16 +310,8 @@ namespace FluidSurface
     void
     forget_history() override
     {
-      previous_step = 0;
-      earlier_step  = 0;
-    }
-    bool
-    fall_back_to_backward_euler(const unsigned int steps) override
-    {
-      if (backward_euler_steps > 0)
-        return false;
-      backward_euler_steps = steps + 1; // the retry and the next `steps`
-      return true;
+      PreviousStateScheme::forget_history();
+      earlier_step = 0;
     }
     void
     save(CheckpointData &data, const StepSystem &system) const override;
@@ -241,19 +338,67 @@ namespace FluidSurface
                          const double       tau);
 
     GeometryIteration::Predictor predictor;
-    BackwardEuler first_step;
-    /// x^{m−1} (flow numbering, ghosted) and the step τ_p that followed it; τ_p = 0: none.
-    VectorType previous_solution;
-    double     previous_step = 0;
     /// x^{m−2} and the step τ_pp that followed it (quadratic predictors only); τ_pp = 0: none.
     VectorType earlier_solution;
     double     earlier_step = 0;
-    /// Steps left that are taken as backward-Euler steps after a rejection (fall_back_to_backward_euler()).
-    unsigned int backward_euler_steps = 0;
     /// x̂ and u* of the step under way, ghosted; X̂ in the geometry numbering.
     VectorType start_fields, lagged_fields, start_position;
     /// The quadratic prediction of x^{m+1} (StepStart::predicted), ghosted.
     VectorType quadratic_fields;
+  };
+
+  /**
+   * The two-stage, stiffly accurate SDIRK method of order 2 (Alexander 1977), γ = 1 − 1/√2, as two
+   * backward-Euler solves of size γτ: Y₁ from x^m, then x^{m+1} from x̂₂ = x^m + ((1−γ)/γ)(Y₁ − x^m). L-stable like
+   * BDF2, but a resolved oscillation λ = iν loses only (γ⁴/2)(ντ)⁴ of its amplitude per step, against BDF2's
+   * (ντ)⁴/4 (doc/scheme.md, "SDIRK2"). The convection of stage s is lagged at u* = x^m + (c_sτ/τ_p)(x^m − x̃^{m−1}),
+   * c₁ = γ, c₂ = 1, and so is the predicted geometry (second order); the solution of stage 1 replaces the
+   * extrapolation where there is no history.
+   */
+  class SDIRK2 : public PreviousStateScheme
+  {
+  public:
+    /// SDIRK2 whose StepStart::predicted is by @p predictor (linear or old surface).
+    explicit SDIRK2(const GeometryIteration::Predictor predictor)
+      : predictor(predictor)
+    {}
+
+    StepStart
+    start(const VectorType  &old_position,
+          const VectorType  &old_fields,
+          const StepSystem  &system,
+          const RigidMotion &carried,
+          const bool         carried_frame,
+          const double       tau) override;
+    unsigned int
+    n_stages() const override
+    {
+      return stages;
+    }
+    double
+    stage_time(const unsigned int stage, const double tau) const override
+    {
+      return stage == 0 && stages == 2 ? gamma * tau : tau;
+    }
+    StepStart
+    next_stage(const unsigned int stage,
+               const VectorType  &stage_fields,
+               const StepSystem  &system,
+               const RigidMotion &carried,
+               const bool         carried_frame,
+               const double       tau) override;
+
+    /// γ = 1 − 1/√2.
+    static const double gamma;
+
+  private:
+    GeometryIteration::Predictor predictor;
+    /// The stages of the step under way (1: a backward-Euler step).
+    unsigned int stages = 1;
+    /// x^m of the step under way, ghosted, and x̃^{m−1} (only with history), owned.
+    VectorType old_solution, previous;
+    /// x̂, u* and X̂ of the stage under way.
+    VectorType start_fields, lagged_fields, start_position;
   };
 } // namespace FluidSurface
 
