@@ -9,7 +9,7 @@
 # Environment: WORK (default benchmarks/rotating_modes/work, not committed), EXE, JOBS (runs at once, default 1),
 # REFINEMENT (default 3), TAUS (default "0.1 0.05 0.025"), CASES (default: the three modes below), SCHEMES
 # (default "be bdf2"; bdf2 is the shipped BDF2 with the linear predictor of the geometry, bdf2s the one from S^m,
-# bdf2q the quadratic one, bdf2n quadratic normal; sdirk2 the two-stage SDIRK with the linear predictor), FRAMES (default "lab Tisserand"), OUT (default results.csv, results_quick.csv with --quick).
+# bdf2q the quadratic one, bdf2n quadratic normal; sdirk2 the two-stage SDIRK with the linear predictor, sdirk2s from S^m), FRAMES (default "lab Tisserand"), OUT (default results.csv, results_quick.csv with --quick).
 set -u
 cd "$(dirname "$0")/../.."
 here=benchmarks/rotating_modes
@@ -25,8 +25,8 @@ for c in $cases; do
   IFS=: read -r shape m parity <<< "$c"
   for s in ${SCHEMES:-be bdf2}; do for frame in ${FRAMES:-lab Tisserand}; do for tau in $taus; do
     # bdf2: the shipped BDF2 (linear predictor of the geometry); bdf2s: from S^m (the step before); bdf2q: quadratic
-    scheme=$(case $s in be) echo "backward Euler";; sdirk2) echo SDIRK2;; *) echo BDF2;; esac)
-    predictor=$(case $s in bdf2s) echo "old surface";; bdf2q) echo quadratic;; bdf2n) echo "quadratic normal";; *) echo linear;; esac)
+    scheme=$(case $s in be) echo "backward Euler";; sdirk2*) echo SDIRK2;; *) echo BDF2;; esac)
+    predictor=$(case $s in bdf2s|sdirk2s) echo "old surface";; bdf2q) echo quadratic;; bdf2n) echo "quadratic normal";; *) echo linear;; esac)
     name=${shape}_m${m}_${parity}_r${refinement}_${s}_${frame}_tau${tau}
     {
       echo "include $PWD/prm/seeded_mode_$shape.prm"

@@ -63,7 +63,7 @@ def main():
         sigma, nu, origin = ref if ref else (float("nan"), float("nan"), "none")
         seen = nu + m * omega if frame == "lab" else nu
         rate = (predict.rate_bdf2 if scheme.startswith("bdf2") else
-                predict.rate_sdirk2 if scheme == "sdirk2" else predict.rate_be)
+                predict.rate_sdirk2 if scheme.startswith("sdirk2") else predict.rate_be)
         predicted = rate(complex(sigma, seen), tau)
         print(f"{name},{shape},{m},{parity},{refinement},{scheme},{frame},{tau},{measured:.5f},{sigma:.5f},{nu:.4f},"
               f"{origin},{omega:.5f},{seen:.4f},{predicted:.5f},{(measured - sigma) / sigma:+.4f},"

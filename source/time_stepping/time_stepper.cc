@@ -88,7 +88,7 @@ namespace FluidSurface
                       "in the lagged convection; the first step and the first after a re-parametrization are "
                       "backward Euler. SDIRK2: the two-stage L-stable SDIRK method of order 2, γ = 1 − 1/√2, two "
                       "solves per step; it damps a resolved oscillation of frequency ν by (γ⁴/2)(ντ)⁴ per step where "
-                      "BDF2 damps it by (ντ)⁴/4; with the conformal mesh law it is not robust (doc/scheme.md, \"SDIRK2\"). "
+                      "BDF2 damps it by (ντ)⁴/4; with the linear predictor and the conformal mesh law it is not robust (doc/scheme.md, \"SDIRK2\"). "
                       "BDF2 and SDIRK2 need 'geometry "
                       "iteration/maximum iterations' ≥ 1, apply = always and time level = 1 (a lagged geometry is "
                       "first order; doc/scheme.md, \"Second order in time\").");
