@@ -64,17 +64,7 @@ namespace FluidSurface
     start              = old_fields;
     start.sadd((1 + omega) / alpha0, -omega * omega / ((1 + omega) * alpha0), previous);
     const VectorType lagged = extrapolation(old_fields, previous, system, tau);
-    start_fields  = system.ghosted_vector();
-    lagged_fields = system.ghosted_vector();
-    start_fields  = start;
-    lagged_fields = lagged;
-    const SurfaceGeometry &geometry = system.geometry();
-    start_position.reinit(geometry.locally_owned_dofs(), geometry.locally_relevant_dofs(), geometry.get_communicator());
-    // From the ghosted copy (a geometry DoF this rank owns may sit on a flow DoF another rank owns), and through a
-    // named vector: a move assignment would hand start_position the owned layout without its ghosts.
-    const VectorType owned_start_position = system.new_position(start_fields);
-    start_position                        = owned_start_position;
-    StepStart result{tau * (1 + omega) / (1 + 2 * omega), start_position, start_fields, lagged_fields, true};
+    StepStart        result = backward_euler_form(start, lagged, system, tau * (1 + omega) / (1 + 2 * omega));
     if (predictor != GeometryIteration::Predictor::old_surface)
       result.predicted = quadratic_predictor() && earlier_step > 0 ?
                            &quadratic_prediction(old_fields, previous, lagged, system, carried, carried_frame, tau) :
@@ -139,6 +129,25 @@ namespace FluidSurface
     result              = old_fields;
     result.sadd(1 + omega, -omega, previous);
     return result;
+  }
+
+  StepStart
+  PreviousStateScheme::backward_euler_form(const VectorType &start,
+                                           const VectorType &lagged,
+                                           const StepSystem &system,
+                                           const double      tau_hat)
+  {
+    start_fields  = system.ghosted_vector();
+    lagged_fields = system.ghosted_vector();
+    start_fields  = start;
+    lagged_fields = lagged;
+    const SurfaceGeometry &geometry = system.geometry();
+    start_position.reinit(geometry.locally_owned_dofs(), geometry.locally_relevant_dofs(), geometry.get_communicator());
+    // From the ghosted copy (a geometry DoF this rank owns may sit on a flow DoF another rank owns), and through a
+    // named vector: a move assignment would hand start_position the owned layout without its ghosts.
+    const VectorType owned_start_position = system.new_position(start_fields);
+    start_position                        = owned_start_position;
+    return {tau_hat, start_position, start_fields, lagged_fields, true};
   }
 
   void
@@ -255,15 +264,7 @@ namespace FluidSurface
       lagged = extrapolation(old_solution, previous, system, tau);
     else
       lagged = stage_fields; // Y₁ at t^m + γτ
-    start_fields  = system.ghosted_vector();
-    lagged_fields = system.ghosted_vector();
-    start_fields  = start;
-    lagged_fields = lagged;
-    const SurfaceGeometry &geometry = system.geometry();
-    start_position.reinit(geometry.locally_owned_dofs(), geometry.locally_relevant_dofs(), geometry.get_communicator());
-    const VectorType owned_start_position = system.new_position(start_fields);
-    start_position                        = owned_start_position;
-    StepStart result{gamma * tau, start_position, start_fields, lagged_fields, true};
+    StepStart result = backward_euler_form(start, lagged, system, gamma * tau);
     if (predictor != GeometryIteration::Predictor::old_surface)
       result.predicted = &lagged_fields;
     return result;

@@ -274,10 +274,20 @@ namespace FluidSurface
     VectorType
     extrapolation(const VectorType &old_fields, const VectorType &previous, const StepSystem &system, const double theta) const;
 
+    /**
+     * The step from x̂ = @p start with the convection lagged at @p lagged, in backward-Euler form of size
+     * @p tau_hat: X̂ is the new position of x̂; all three are kept (ghosted) until the next call. StepStart's
+     * frame velocity is taken on the new surface, and there is no prediction.
+     */
+    StepStart
+    backward_euler_form(const VectorType &start, const VectorType &lagged, const StepSystem &system, const double tau_hat);
+
     BackwardEuler first_step;
     /// x^{m−1} (flow numbering, ghosted) and the step τ_p that followed it; τ_p = 0: none.
     VectorType previous_solution;
     double     previous_step = 0;
+    /// x̂ and u* of the step or stage under way, ghosted; X̂ in the geometry numbering (backward_euler_form()).
+    VectorType start_fields, lagged_fields, start_position;
 
   private:
     /// Steps left that are taken as backward-Euler steps after a rejection (fall_back_to_backward_euler()).
@@ -341,8 +351,6 @@ namespace FluidSurface
     /// x^{m−2} and the step τ_pp that followed it (quadratic predictors only); τ_pp = 0: none.
     VectorType earlier_solution;
     double     earlier_step = 0;
-    /// x̂ and u* of the step under way, ghosted; X̂ in the geometry numbering.
-    VectorType start_fields, lagged_fields, start_position;
     /// The quadratic prediction of x^{m+1} (StepStart::predicted), ghosted.
     VectorType quadratic_fields;
   };
@@ -397,8 +405,6 @@ namespace FluidSurface
     unsigned int stages = 1;
     /// x^m of the step under way, ghosted, and x̃^{m−1} (only with history), owned.
     VectorType old_solution, previous;
-    /// x̂, u* and X̂ of the stage under way.
-    VectorType start_fields, lagged_fields, start_position;
   };
 } // namespace FluidSurface
 
