@@ -8,6 +8,7 @@
 #include <fluid_surface/linear_algebra/factorization_preconditioner.h>
 #include <fluid_surface/linear_algebra/reused_factorization_solver.h>
 
+#include <cmath>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -39,6 +40,13 @@ namespace FluidSurface
                       RealRange::closed(1e-14, 1e-2),
                       "Relative residual ‖b − Kx‖/‖b‖ (true residual), 1e-14 ≤ tolerance ≤ 1e-2, at which GMRES stops "
                       "(below 1e-14 rounding prevents convergence); also the tolerance of the block-preconditioned solver of scene fixed surface.");
+    prm.declare_entry("factorize on step change",
+                      Patterns::Tools::to_string(defaults.step_change),
+                      RealRange::at_least(0),
+                      "Relative change |τ/τ_f − 1| ≥ 0 of the step size τ against the step size τ_f of the kept "
+                      "factorization above which the next solve of scene full factorizes its matrix, whatever GMRES "
+                      "would do: the mass term (1/τ)(u, v) dominates the matrix, and the old factors of another τ "
+                      "cost GMRES iterations for as long as the new τ lasts. 0: the step size does not count.");
     prm.declare_entry("direct solver",
                       defaults.direct_solver,
                       Patterns::Selection("default|Amesos_Klu|Amesos_Mumps"),
@@ -54,6 +62,7 @@ namespace FluidSurface
     reuse_factorization  = prm.get_bool("reuse factorization");
     max_reuse_iterations = prm.get_integer("max reuse iterations");
     tolerance            = prm.get_double("tolerance");
+    step_change          = prm.get_double("factorize on step change");
     direct_solver        = prm.get("direct solver");
     prm.leave_subsection();
   }
@@ -90,6 +99,16 @@ namespace FluidSurface
   }
 
   void
+  ReusedFactorizationSolver::matrix_changed(const double tau)
+  {
+    matrix_changed();
+    step_size = tau;
+    if (parameters.step_change > 0 && factors_step_size > 0 &&
+        std::abs(tau / factors_step_size - 1) > parameters.step_change)
+      factorization_requested = true;
+  }
+
+  void
   ReusedFactorizationSolver::release()
   {
     factorization.reset();
@@ -111,6 +130,7 @@ namespace FluidSurface
     factorization->factorize(matrix, step_timer);
     change_of_variables       = nullptr;
     factors_of_current_matrix = true;
+    factors_step_size         = step_size;
     factorization_requested   = false;
     ++factorization_count;
   }

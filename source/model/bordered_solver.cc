@@ -34,6 +34,7 @@ namespace FluidSurface
   BorderedSolver::Outcome
   BorderedSolver::solve(const BorderedSystem        &system,
                         const StepSystem            &step_system,
+                        const double                 tau,
                         const std::vector<double>   &values,
                         const StepRequest::Solver    solver,
                         BorderedSystem::BlockVector &solution,
@@ -46,7 +47,7 @@ namespace FluidSurface
     ReusedFactorizationSolver &linear_solver = solver == StepRequest::Solver::fresh_klu ? fresh : kept;
     try
       {
-        linear_solver.matrix_changed(); // every step assembles its matrix on the new surface
+        linear_solver.matrix_changed(tau); // every step assembles its matrix on the new surface
         const dealii::Tensor<2, 3> identity = dealii::unit_symmetric_tensor<3>();
         if (&linear_solver == &kept && rotation_since_factorization != identity)
           kept.set_change_of_variables([this, &step_system](VectorType &v, const bool transpose) {

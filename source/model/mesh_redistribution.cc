@@ -186,9 +186,12 @@ namespace FluidSurface
                                                  FullMatrix<double>       &matrix) const
   {
     const double dA = point.flow.JxW;
-    for (const unsigned int i : dofs.new_position)
-      for (const unsigned int j : dofs.new_position)
-        matrix(i, j) += scalar_product(point.new_position_gradient[i], point.new_position_gradient[j]) * dA;
+    // ∇_S η of Y's component d at a node is nonzero in row d only: (∇_S η_i, ∇_S η_j) couples equal components.
+    for (const auto &row_node : dofs.new_position_nodes)
+      for (const auto &column_node : dofs.new_position_nodes)
+        for (unsigned int d = 0; d < 3; ++d)
+          matrix(row_node[d], column_node[d]) +=
+            (point.new_position_gradient[row_node[d]][d] * point.new_position_gradient[column_node[d]][d]) * dA;
   }
 
   void

@@ -44,6 +44,8 @@ namespace FluidSurface
       , old_position(gauss.size())
       , nodal_old_position(nodal_rule.size())
       , reference_gradient(gauss.size())
+      , turned_velocity(flow_fe.n_dofs_per_cell())
+      , convected_velocity(flow_fe.n_dofs_per_cell())
     {}
     CellContext(const CellContext &other)
       : CellContext(other.flow.get_mapping(),
@@ -64,6 +66,8 @@ namespace FluidSurface
     std::vector<Tensor<1, 3>> nodal_smooth_normal;    ///< ñ at the nodal points
     std::vector<Tensor<1, 3>> old_position;           ///< X̂ at the Gauss points
     std::vector<Tensor<1, 3>> nodal_old_position;     ///< X̂ at the nodal points
+    // By local DoF j of u at the current Gauss point: Ω × φ_j and G(φ_j) w (the same for every test function).
+    std::vector<Tensor<1, 3>> turned_velocity, convected_velocity;
     // Law reference: ∇_{S^m}X₀ at the Gauss points, ñ by node, the rows of Y before their projection.
     std::vector<Tensor<2, 3>> reference_gradient;
     std::vector<Tensor<1, 3>> node_normals;
@@ -110,6 +114,14 @@ namespace FluidSurface
         const Point<3> start       = carried_frame && !data.relative_transport ?
                                        old_point - tau * data.carried.value(frame_point) :
                                        old_point;
+        const bool turning = carried_frame && flow.inertia;
+        for (const unsigned int j : layout.velocity)
+          {
+            if (turning)
+              cell.turned_velocity[j] = SurfaceFluid::turned_velocity(p, j, data.carried.rotation);
+            if (flow.convection)
+              cell.convected_velocity[j] = SurfaceFluid::convected_velocity(p, j);
+          }
         for (const unsigned int i : layout.velocity)
           {
             if (flow.inertia)
@@ -120,11 +132,11 @@ namespace FluidSurface
               {
                 double a = flow.viscous_term(p, i, j);
                 a += SurfaceFluid::mass_term(p, i, j, mass);
-                if (carried_frame && flow.inertia)
-                  a += SurfaceFluid::frame_rotation_term(p, i, j, data.carried.rotation);
+                if (turning)
+                  a += SurfaceFluid::frame_rotation_term(p, i, cell.turned_velocity[j]);
                 // (∇_w u, v) with w = u^m, consistent (not skew-symmetrized; doc/scheme.md).
                 if (flow.convection)
-                  a += SurfaceFluid::convection_term(p, i, j);
+                  a += SurfaceFluid::convection_term(p, i, cell.convected_velocity[j]);
                 local.matrix(i, j) += a * dA;
               }
             for (const unsigned int j : layout.pressure)

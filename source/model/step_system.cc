@@ -36,8 +36,18 @@ namespace FluidSurface
     DoFTools::make_hanging_node_constraints(dofs, hanging_nodes);
     hanging_nodes.close();
 
+    Table<2, DoFTools::Coupling> coupling(DofLayout::n_components, DofLayout::n_components);
+    for (unsigned int row = 0; row < DofLayout::n_components; ++row)
+      for (unsigned int column = 0; column < DofLayout::n_components; ++column)
+        coupling(row, column) = couples(row, column) ? DoFTools::always : DoFTools::none;
+    const unsigned int n_local = element->n_dofs_per_cell();
+    local_coupling.assign(n_local, std::vector<bool>(n_local));
+    for (unsigned int i = 0; i < n_local; ++i)
+      for (unsigned int j = 0; j < n_local; ++j)
+        local_coupling[i][j] =
+          couples(element->system_to_component_index(i).first, element->system_to_component_index(j).first);
     DynamicSparsityPattern dsp(relevant);
-    DoFTools::make_sparsity_pattern(dofs, dsp, hanging_nodes, false);
+    DoFTools::make_sparsity_pattern(dofs, coupling, dsp, hanging_nodes, false);
     SparsityTools::distribute_sparsity_pattern(dsp, owned, surface.get_communicator(), relevant);
     system_matrix.reinit(owned, owned, dsp, surface.get_communicator());
     system_rhs.reinit(owned, surface.get_communicator());
@@ -84,9 +94,40 @@ namespace FluidSurface
       row = 0;
   }
 
+  bool
+  StepSystem::couples(const unsigned int row, const unsigned int column)
+  {
+    using L              = DofLayout;
+    const auto unknown = [](const unsigned int component) {
+      return component < L::pressure_component ? L::velocity_component :
+             component < L::new_position_component ? component : L::new_position_component;
+    };
+    const unsigned int r = unknown(row), c = unknown(column);
+    switch (r)
+      {
+        case L::velocity_component:
+          return c != L::curvature_component;
+        case L::pressure_component:
+          return c == L::velocity_component || c == L::pressure_component;
+        case L::curvature_component:
+          return c == L::velocity_component || c == L::new_position_component;
+        case L::bending_component:
+          return c == L::bending_component || c == L::curvature_component;
+        default:
+          return c == L::new_position_component || c == L::curvature_component;
+      }
+  }
+
   void
   StepSystem::distribute_local_to_global(const LocalSystem &local, const bool rigid)
   {
+    for (unsigned int i = 0; i < local.matrix.m(); ++i)
+      for (unsigned int j = 0; j < local.matrix.n(); ++j)
+        AssertThrow(local_coupling[i][j] || local.matrix(i, j) == 0,
+                    ExcMessage("The step's local matrix couples components " +
+                               std::to_string(element->system_to_component_index(i).first) + " and " +
+                               std::to_string(element->system_to_component_index(j).first) +
+                               ", which StepSystem::couples() leaves out of the sparsity pattern."));
     hanging_nodes.distribute_local_to_global(local.matrix, local.rhs, local.indices, system_matrix, system_rhs);
     hanging_nodes.distribute_local_to_global(local.volume_column, local.indices, volume);
     if (rigid)

@@ -248,8 +248,8 @@ namespace FluidSurface
   {
     const GlobalConstraints &constraints = step.constraints;
     const BorderedSystem     bordered(system.matrix(), constraints.columns, constraints.rows);
-    const BorderedSolver::Outcome outcome =
-      bordered_solver.solve(bordered, system, constraints.values, step.request.solver, solution, same_step);
+    const BorderedSolver::Outcome outcome = bordered_solver.solve(
+      bordered, system, step.start.tau, constraints.values, step.request.solver, solution, same_step);
     result.linear_iterations += outcome.iterations;
     result.factorized = result.factorized || outcome.factorized;
     if (outcome.failure != StepFailure::none)

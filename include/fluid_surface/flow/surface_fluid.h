@@ -61,11 +61,25 @@ namespace FluidSurface
       return c * (point.old_velocity * point.velocity[i]);
     }
 
+    /// G(φ_j) w, the trial function's part of the convection, with w = point.transport_velocity.
+    static dealii::Tensor<1, 3>
+    convected_velocity(const FlowPointValues &point, const unsigned int j)
+    {
+      return point.velocity_gradient[j] * point.transport_velocity;
+    }
+
+    /// Convection (∇_w u, v) = (G w, v) for the trial function's G(φ_j) w = @p convected (convected_velocity()).
+    static double
+    convection_term(const FlowPointValues &point, const unsigned int i, const dealii::Tensor<1, 3> &convected)
+    {
+      return convected * point.velocity[i];
+    }
+
     /// Convection (∇_w u, v) = (G w, v), G = ∇_C u, with the transport velocity w = point.transport_velocity.
     static double
     convection_term(const FlowPointValues &point, const unsigned int i, const unsigned int j)
     {
-      return (point.velocity_gradient[j] * point.transport_velocity) * point.velocity[i];
+      return convection_term(point, i, convected_velocity(point, j));
     }
 
     /**
@@ -95,13 +109,20 @@ namespace FluidSurface
     /**
      * The inertia of a step solved in a frame that turns with the angular velocity Ω (the carried frame of the
      * mesh law `reference`): with u = Qũ and v = Qṽ, (1/τ)(u − Q u^m, v) = (1/τ)(ũ − u^m, ṽ) and the frame adds
-     * (Ω × ũ, ṽ). Exact when the velocity turns with the body.
+     * (Ω × ũ, ṽ), here for the trial function's Ω × φ_j = @p turned (turned_velocity()). Exact when the velocity
+     * turns with the body.
      */
     static double
-    frame_rotation_term(const FlowPointValues &point, const unsigned int i, const unsigned int j,
-                        const dealii::Tensor<1, 3> &omega)
+    frame_rotation_term(const FlowPointValues &point, const unsigned int i, const dealii::Tensor<1, 3> &turned)
     {
-      return dealii::cross_product_3d(omega, point.velocity[j]) * point.velocity[i];
+      return turned * point.velocity[i];
+    }
+
+    /// Ω × φ_j for the frame's angular velocity @p omega (frame_rotation_term()).
+    static dealii::Tensor<1, 3>
+    turned_velocity(const FlowPointValues &point, const unsigned int j, const dealii::Tensor<1, 3> &omega)
+    {
+      return dealii::cross_product_3d(omega, point.velocity[j]);
     }
 
     /// Pressure −(p, div_P v).

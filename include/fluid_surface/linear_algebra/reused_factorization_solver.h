@@ -56,6 +56,7 @@ namespace FluidSurface
       bool         reuse_factorization  = true;
       unsigned int max_reuse_iterations = 10;        ///< GMRES iterations above which the factors are replaced
       double       tolerance            = 1e-10;     ///< relative residual ‖b − Kx‖/‖b‖ of a GMRES solve
+      double       step_change          = 0;         ///< |τ/τ_f − 1| above which the factors are replaced; 0: never
       std::string  direct_solver        = "default"; ///< Amesos package, or the scene's own choice
 
       static void
@@ -107,6 +108,12 @@ namespace FluidSurface
     {
       factors_of_current_matrix = false;
     }
+    /**
+     * The same for a matrix of the step size @p tau (that of its mass term (1/τ)(u, v)): if it differs from the
+     * step size of the kept factors by more than `factorize on step change`, the next solve factorizes.
+     */
+    void
+    matrix_changed(const double tau);
     /**
      * The matrices of the next solves are close to T A₀ Tᵀ, A₀ the factorized one, with the change of variables
      * @p change (a rotation of the vector unknowns since the factorization): GMRES is then preconditioned by
@@ -180,6 +187,8 @@ namespace FluidSurface
     bool                 factors_of_current_matrix = false; ///< the factors are of the matrix of the next solve
     bool                 factorization_requested   = true;
     unsigned int         factorization_count       = 0;
+    double               step_size                 = 0; ///< τ of the matrix of the next solve (0: not given)
+    double               factors_step_size         = 0; ///< τ of the matrix of the kept factors (0: not given)
     dealii::TimerOutput *step_timer                = nullptr;
   };
 } // namespace FluidSurface
