@@ -133,7 +133,7 @@ namespace FluidSurface
      * Whether the equations of component @p row (DofLayout's numbering) involve component @p column: the
      * momentum rows u, p, y and Y (convection by the mesh motion); the continuity rows u (and p, the prescribed
      * velocity's mass); the kinematics κ: u and Y; the bending scalar y: y and κ; the position rows Y: Y and κ.
-     * The matrix stores only these blocks (61 % of the entries of the full coupling at k = 2).
+     * The matrix stores only these blocks (at k = 2, 3553 of the 76² entries of a cell).
      */
     static bool
     couples(const unsigned int row, const unsigned int column);
