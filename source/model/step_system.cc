@@ -97,7 +97,7 @@ namespace FluidSurface
   bool
   StepSystem::couples(const unsigned int row, const unsigned int column)
   {
-    using L              = DofLayout;
+    using L            = DofLayout;
     const auto unknown = [](const unsigned int component) {
       return component < L::pressure_component ? L::velocity_component :
              component < L::new_position_component ? component : L::new_position_component;

@@ -49,10 +49,10 @@ namespace FluidSurface
     initial_guess(const BorderedSystem &system, const VectorType &rhs, const unsigned int n_constraints) const;
     /**
      * Solves the @p system of @p step_system, assembled with the step size @p tau, with the constraint values
-     * @p values by the solver @p solver, from and into @p solution; distributes the hanging-node constraints. @p same_step: a solve of the geometry
-     * iteration after the step's first one, which takes over Z = A₀⁻¹C of the kept factors from the step's
-     * earlier solves (BorderedFactorizationPreconditioner::KeptColumns: the columns of one step differ by the
-     * move of its surface).
+     * @p values by the solver @p solver, from and into @p solution; distributes the hanging-node constraints.
+     * @p same_step: a solve of the geometry iteration after the step's first one, which takes over Z = A₀⁻¹C of
+     * the kept factors from the step's earlier solves (BorderedFactorizationPreconditioner::KeptColumns: the
+     * columns of one step differ by the move of its surface).
      */
     Outcome
     solve(const BorderedSystem        &system,
