@@ -559,8 +559,9 @@ namespace FluidSurface
       crossing_1e4 = crossing(1e-4);
     if (std::isnan(crossing_1e2) && v.symmetry_deviation > 1e-2)
       crossing_1e2 = crossing(1e-2);
-    last_time      = time;
-    last_deviation = v.symmetry_deviation;
+    last_time             = time;
+    last_deviation        = v.symmetry_deviation;
+    last_angular_velocity = v.angular_velocity;
     if (reference_shape && std::isfinite(v.l2_distance) && !(v.l2_distance >= min_l2_distance))
       {
         min_l2_distance = v.l2_distance;
@@ -630,6 +631,7 @@ namespace FluidSurface
     else
       out << "n/a (the run did not reach the window)\n";
     out << "final total energy: " << final_total_energy << '\n'
+        << "final angular velocity: " << last_angular_velocity << '\n'
         << "max area drift: " << area_drift << '\n'
         << "max volume drift: " << volume_drift << '\n'
         << "max angular momentum drift: " << angular_momentum_drift << '\n'
@@ -662,6 +664,7 @@ namespace FluidSurface
     data.set("diagnostics/t_sym_1e-2", crossing_1e2);
     data.set("diagnostics/last time", last_time);
     data.set("diagnostics/last symmetry deviation", last_deviation);
+    data.set("diagnostics/last angular velocity", last_angular_velocity);
     data.set("diagnostics/omega integral", omega_integral);
     data.set("diagnostics/omega time", omega_time);
   }
@@ -685,6 +688,9 @@ namespace FluidSurface
     last_time                = has_last ? data.get_double("diagnostics/last time") : std::numeric_limits<double>::quiet_NaN();
     last_deviation =
       has_last ? data.get_double("diagnostics/last symmetry deviation") : std::numeric_limits<double>::quiet_NaN();
+    last_angular_velocity    = data.has("diagnostics/last angular velocity") ?
+                                 data.get_double("diagnostics/last angular velocity") :
+                                 std::numeric_limits<double>::quiet_NaN();
     omega_integral           = data.get_double("diagnostics/omega integral");
     omega_time               = data.get_double("diagnostics/omega time");
   }

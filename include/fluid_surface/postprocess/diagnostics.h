@@ -178,6 +178,8 @@ namespace FluidSurface
     /// t and e(λ) of the last recorded step: a crossing is interpolated in ln e(λ) between it and the next.
     double last_time      = std::numeric_limits<double>::quiet_NaN();
     double last_deviation = std::numeric_limits<double>::quiet_NaN();
+    /// ω = |Ω| of the last recorded step: with the steady-state stop, the end state's angular velocity.
+    double last_angular_velocity = std::numeric_limits<double>::quiet_NaN();
     double omega_integral = 0, omega_time = 0;
 
     /// `reference equilibrium`: the branch of the reference shape of E(L²); none: no reference
