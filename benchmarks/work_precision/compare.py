@@ -5,8 +5,9 @@
     benchmarks/work_precision/compare.py <summary directory> <reference run> <run> ... > table.csv
 
 Each run is <summary directory>/<run>.summary. Columns: status, steps, rejected steps, LU factorizations, wall time,
-then t_sym_1e-4, t_sym_1e-2, the mean angular velocity ⟨ω⟩ of the prm's window and the final total energy F, each
-with its relative difference from the reference's.
+then t_sym_1e-4, t_sym_1e-2, the mean angular velocity ⟨ω⟩ of the prm's window, the final total energy F and the final
+angular velocity ω (those of the end state when the run stopped at its steady state), each with its relative
+difference from the reference's, and the time the steady state was reached (empty: the run did not stop there).
 """
 import os
 import sys
@@ -26,9 +27,9 @@ def summary(directory, name):
 
 directory, reference, names = sys.argv[1], sys.argv[2], sys.argv[3:]
 keys = [("t_sym_1e-4", "t_sym_1e-4"), ("t_sym_1e-2", "t_sym_1e-2"), ("mean angular velocity", "mean omega"),
-        ("final total energy", "final F")]
+        ("final total energy", "final F"), ("final angular velocity", "final omega")]
 ref = summary(directory, reference)
-print("run,status,steps,rejected,LU factorizations,wall s," + ",".join(f"{k},{k} vs reference" for _, k in keys))
+print("run,status,steps,rejected,LU factorizations,wall s," + ",".join(f"{k},{k} vs reference" for _, k in keys) + ",steady at")
 for name in names:
     s = summary(directory, name)
     cells = [name, s.get("status", "missing").split(":")[0], s.get("steps", ""), s.get("rejected steps", ""),
@@ -39,4 +40,6 @@ for name in names:
             cells += [s[key], f"{(value - r) / abs(r):+.2e}"]
         except (KeyError, ValueError):
             cells += [s.get(key, ""), ""]
+    steady = s.get("steady state", "")
+    cells.append(steady.split("t = ")[1].split(":")[0] if steady.startswith("reached at t = ") else "")
     print(",".join(cells))
