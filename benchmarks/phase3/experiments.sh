@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/phase3/experiments.sh: the shipped experiments through their symmetry breaking: prm/oblate.prm and
-# prm/prolate.prm (refinement 4, to t = 7 and 25) and prm/oblate_long.prm, prm/prolate_long.prm (refinement 3, to
+# prm/prolate.prm (refinement 4, to the oblate's steady end state and to t = 25) and prm/oblate_long.prm, prm/prolate_long.prm (refinement 3, to
 # their steady state). Copies each run's statistics and summary to experiments/<name>.* and writes experiments.csv.
 #   benchmarks/phase3/experiments.sh [NAMES]        from the repository root, after building
 #   benchmarks/phase3/experiments.sh --table        only rebuild experiments.csv from experiments/
