@@ -81,6 +81,13 @@ namespace FluidSurface
                       "20",
                       Patterns::Integer(2, 60),
                       "k, 2 ≤ k ≤ 60: map applications per wavenumber and parity at most (each one a run over T).");
+    prm.declare_entry("maximum restarts",
+                      "5",
+                      Patterns::Integer(0, 100),
+                      "r, 0 ≤ r ≤ 100: thick (Krylov–Schur) restarts per wavenumber and parity at most. When the "
+                      "Krylov space is full and the leading Ritz value has not converged, Arnoldi keeps the invariant "
+                      "subspace of the leading Ritz values of the seed's wavenumber and parity (at most half the "
+                      "space) and goes on from there. 0: no restart (the run ends unconverged).");
     prm.declare_entry("eigenvalues per wavenumber",
                       "3",
                       Patterns::Integer(1, 60),
@@ -96,7 +103,7 @@ namespace FluidSurface
                       RealRange::left_open(0, 1),
                       "Tolerance, 0 < tol ≤ 1: Arnoldi stops when the residual r = ‖Az − μz‖/|μ| of the leading Ritz value "
                       "of the seed's wavenumber and parity is below it. One still above it at the maximum Krylov "
-                      "dimension is written with its residual; if its σ + ln(1/(1 − r))/T is negative it decays "
+                      "dimension after the last restart is written with its residual; if its σ + ln(1/(1 − r))/T is negative it decays "
                       "whatever its error (a warning), else the run ends with exit status 1 after the last wavenumber.");
     prm.declare_entry("equilibrium tolerance",
                       "0.02",
@@ -191,6 +198,7 @@ namespace FluidSurface
                           prm.get("settling time"),
                           "0 or a multiple of time stepping/time step (" + Utilities::to_string(tau) + ")");
     max_krylov            = prm.get_integer("maximum Krylov dimension");
+    max_restarts          = prm.get_integer("maximum restarts");
     n_reported            = prm.get_integer("eigenvalues per wavenumber");
     epsilon               = prm.get_double("perturbation size");
     residual_tolerance    = prm.get_double("residual tolerance");
@@ -434,7 +442,8 @@ namespace FluidSurface
     std::vector<Perturbation> V{seed(m, odd)};
     FullMatrix<double>        H(max_krylov + 1, max_krylov);
     std::vector<Mode>         modes;
-    for (unsigned int j = 1; j <= max_krylov; ++j)
+    unsigned int              restarts = 0;
+    for (unsigned int j = 1;; ++j)
       {
         Perturbation w = mapped(V[j - 1], what + ", Krylov vector " + std::to_string(j));
         const double mapped_norm = std::sqrt(w.dot(w));
@@ -452,6 +461,7 @@ namespace FluidSurface
         const double sigma = found ? std::log(std::abs(modes[0].multiplier)) / map_time : 0.0;
         statistics.add_value("wavenumber", m);
         statistics.add_value("odd", odd ? 1 : 0);
+        statistics.add_value("restarts", restarts);
         statistics.add_value("Krylov dimension", j);
         statistics.add_value("norm of the mapped vector", mapped_norm);
         statistics.add_value("leading growth rate", sigma);
@@ -467,11 +477,76 @@ namespace FluidSurface
           pcout << "no Ritz vector of this wavenumber and parity yet" << std::endl;
         if (converged(modes) || H(j, j - 1) < 1e-12 * mapped_norm)
           break;
-        V.push_back(w);
-        V.back().scale(1 / H(j, j - 1));
+        w.scale(1 / H(j, j - 1));
+        if (j < max_krylov)
+          {
+            V.push_back(w);
+            continue;
+          }
+        if (restarts == max_restarts)
+          break;
+        ++restarts;
+        // The seed's modes; none yet: the leading ones of any wavenumber.
+        j = restart(H, j, V, modes.empty() ? ritz_modes(H, j, V) : modes, w);
+        pcout << "    " << what << ": restart " << restarts << ", " << j << " Ritz vectors kept" << std::endl;
       }
     modes.resize(std::min<std::size_t>(modes.size(), n_reported));
     return modes;
+  }
+
+  unsigned int
+  StabilityScene::restart(FullMatrix<double>        &H,
+                          const unsigned int         j,
+                          std::vector<Perturbation> &basis,
+                          const std::vector<Mode>   &kept,
+                          const Perturbation        &next) const
+  {
+    // Y: the real and imaginary parts of the leading Ritz vectors y (H_j y = μy), orthonormalized.
+    std::vector<Vector<double>> Y;
+    const auto                  add = [&](Vector<double> y) {
+      for (unsigned int pass = 0; pass < 2; ++pass)
+        for (const Vector<double> &q : Y)
+          y.add(-(q * y), q);
+      if (y.l2_norm() > 1e-8)
+        {
+          y /= y.l2_norm();
+          Y.push_back(y);
+        }
+    };
+    for (const Mode &mode : kept)
+      {
+        const bool complex = mode.multiplier.imag() > 1e-12 * std::abs(mode.multiplier);
+        if (Y.size() + (complex ? 2 : 1) > j / 2)
+          break;
+        const std::vector<std::complex<double>> y = null_vector(H, j, mode.multiplier);
+        Vector<double>                          re(j), im(j);
+        for (unsigned int k = 0; k < j; ++k)
+          {
+            re[k] = y[k].real();
+            im[k] = y[k].imag();
+          }
+        add(re);
+        if (complex)
+          add(im);
+      }
+    const unsigned int p = Y.size();
+    FullMatrix<double> restarted(H.m(), H.n());
+    for (unsigned int a = 0; a < p; ++a)
+      {
+        for (unsigned int b = 0; b < p; ++b)
+          for (unsigned int r = 0; r < j; ++r)
+            for (unsigned int c = 0; c < j; ++c)
+              restarted(a, b) += Y[a][r] * H(r, c) * Y[b][c];
+        restarted(p, a) = H(j, j - 1) * Y[a][j - 1];
+      }
+    H = restarted;
+    std::vector<Perturbation> kept_basis(p, zero());
+    for (unsigned int a = 0; a < p; ++a)
+      for (unsigned int k = 0; k < j; ++k)
+        kept_basis[a].add(Y[a][k], basis[k]);
+    kept_basis.push_back(next);
+    basis = std::move(kept_basis);
+    return p;
   }
 
   void
@@ -657,10 +732,11 @@ namespace FluidSurface
         for (unsigned int i = 1; i < unconverged.size(); ++i)
           msg << (i + 1 == unconverged.size() ? " and of " : ", of ") << unconverged[i];
         msg << " did not reach 'stability/residual tolerance' " << residual_tolerance
-            << " at the maximum Krylov dimension " << max_krylov;
+            << " at the maximum Krylov dimension " << max_krylov << " after " << max_restarts << " restart"
+            << (max_restarts == 1 ? "" : "s");
         throw RunFailed(msg.str(),
                         "all rows are in " + spectrum_file + " (column residual); raise 'stability/maximum Krylov "
-                        "dimension' or 'stability/map time'");
+                        "dimension', 'stability/maximum restarts' or 'stability/map time'");
       }
   }
 } // namespace FluidSurface

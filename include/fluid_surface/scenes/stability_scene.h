@@ -118,10 +118,23 @@ namespace FluidSurface
     /// The unit seed: the radial displacement Re h_m/max|h_m| (AzimuthalHarmonic), no velocity.
     Perturbation
     seed(const unsigned int m, const bool odd) const;
-    /// Arnoldi from seed(m, odd) until the leading Ritz value of (m, odd) converges or the Krylov space is full;
-    /// the leading modes of (m, odd).
+    /// Arnoldi from seed(m, odd) until the leading Ritz value of (m, odd) converges, or the Krylov space is full
+    /// after `maximum restarts` thick restarts (restart()); the leading modes of (m, odd).
     std::vector<Mode>
     arnoldi(const unsigned int m, const bool odd);
+    /**
+     * The thick (Krylov–Schur) restart of a full Arnoldi factorization A V_j = V_j H_j + h v e_jᵀ, with
+     * @p next = v the unit vector that would extend the basis. Keeps the real invariant subspace of H_j spanned by
+     * the Ritz vectors of @p kept (the leading modes of the seed's wavenumber and parity; complex pairs as their
+     * real and imaginary parts), of dimension p ≤ j/2: with Y its orthonormal basis, A (V_j Y) = (V_j Y)(YᵀH_jY) +
+     * h v (e_jᵀY). @p basis becomes [V_j Y, v] and @p H holds YᵀH_jY with the row h e_jᵀY below it. Returns p.
+     */
+    unsigned int
+    restart(dealii::FullMatrix<double>  &H,
+            const unsigned int           j,
+            std::vector<Perturbation>   &basis,
+            const std::vector<Mode>     &kept,
+            const Perturbation          &next) const;
     /// The Ritz values of the leading j×j block of @p H with their residuals and the classification of their Ritz
     /// vectors in the Krylov @p basis; sorted by |μ|, one per conjugate pair.
     std::vector<Mode>
@@ -143,6 +156,7 @@ namespace FluidSurface
     double                    tau      = 0;          ///< τ
     bool                      bdf2     = false;      ///< `time stepping/scheme = BDF2`
     unsigned int              max_krylov = 0;        ///< largest Krylov dimension
+    unsigned int              max_restarts = 0;      ///< thick restarts per (m, parity) at most
     unsigned int              n_reported = 0;        ///< eigenvalue pairs reported per (m, parity)
     double                    epsilon    = 0;        ///< ε
     double                    residual_tolerance = 0;    ///< convergence of the leading Ritz value
