@@ -87,7 +87,8 @@ namespace FluidSurface
                       "r, 0 ≤ r ≤ 100: thick (Krylov–Schur) restarts per wavenumber and parity at most. When the "
                       "Krylov space is full and the leading Ritz value has not converged, Arnoldi keeps the invariant "
                       "subspace of the leading Ritz values of the seed's wavenumber and parity (at most half the "
-                      "space) and goes on from there. 0: no restart (the run ends unconverged).");
+                      "space) and goes on from there; not again once a restart has not halved the smallest leading "
+                      "residual (the noise of the finite-difference map). 0: no restart.");
     prm.declare_entry("eigenvalues per wavenumber",
                       "3",
                       Patterns::Integer(1, 60),
@@ -443,6 +444,9 @@ namespace FluidSurface
     FullMatrix<double>        H(max_krylov + 1, max_krylov);
     std::vector<Mode>         modes;
     unsigned int              restarts = 0;
+    // The smallest leading residual of this cycle and of the one before: a restart that does not halve it has
+    // met the noise of the finite-difference map, and more restarts do not help.
+    double cycle_residual = std::numeric_limits<double>::infinity(), previous_residual = cycle_residual;
     for (unsigned int j = 1;; ++j)
       {
         Perturbation w = mapped(V[j - 1], what + ", Krylov vector " + std::to_string(j));
@@ -475,6 +479,8 @@ namespace FluidSurface
                 << std::setprecision(2) << std::scientific << modes[0].residual << std::defaultfloat << std::endl;
         else
           pcout << "no Ritz vector of this wavenumber and parity yet" << std::endl;
+        if (found)
+          cycle_residual = std::min(cycle_residual, modes[0].residual);
         if (converged(modes) || H(j, j - 1) < 1e-12 * mapped_norm)
           break;
         w.scale(1 / H(j, j - 1));
@@ -485,6 +491,15 @@ namespace FluidSurface
           }
         if (restarts == max_restarts)
           break;
+        if (restarts > 0 && !(cycle_residual < 0.5 * previous_residual))
+          {
+            pcout << "    " << what << ": no restart: the last one did not halve the leading residual ("
+                  << std::setprecision(2) << std::scientific << previous_residual << " → " << cycle_residual
+                  << std::defaultfloat << ")" << std::endl;
+            break;
+          }
+        previous_residual = cycle_residual;
+        cycle_residual    = std::numeric_limits<double>::infinity();
         ++restarts;
         // The seed's modes; none yet: the leading ones of any wavenumber.
         j = restart(H, j, V, modes.empty() ? ritz_modes(H, j, V) : modes, w);
