@@ -505,6 +505,7 @@ namespace FluidSurface
         j = restart(H, j, V, modes.empty() ? ritz_modes(H, j, V) : modes, w);
         pcout << "    " << what << ": restart " << restarts << ", " << j << " Ritz vectors kept" << std::endl;
       }
+    restarts_used = restarts;
     modes.resize(std::min<std::size_t>(modes.size(), n_reported));
     return modes;
   }
@@ -735,7 +736,7 @@ namespace FluidSurface
                 entry << "no Ritz vector of this wavenumber and parity";
               else
                 entry << which << ": residual " << std::setprecision(3) << modes[first].residual;
-              entry << ")";
+              entry << ", " << restarts_used << " restart" << (restarts_used == 1 ? "" : "s") << ")";
               unconverged.push_back(entry.str());
             }
         }
@@ -747,8 +748,7 @@ namespace FluidSurface
         for (unsigned int i = 1; i < unconverged.size(); ++i)
           msg << (i + 1 == unconverged.size() ? " and of " : ", of ") << unconverged[i];
         msg << " did not reach 'stability/residual tolerance' " << residual_tolerance
-            << " at the maximum Krylov dimension " << max_krylov << " after " << max_restarts << " restart"
-            << (max_restarts == 1 ? "" : "s");
+            << " at the maximum Krylov dimension " << max_krylov;
         throw RunFailed(msg.str(),
                         "all rows are in " + spectrum_file + " (column residual); raise 'stability/maximum Krylov "
                         "dimension', 'stability/maximum restarts' or 'stability/map time'");

@@ -172,6 +172,7 @@ namespace FluidSurface
     std::string checkpoint_directory;    ///< `checkpoint directory`
     bool        anchor_end_state = true; ///< `anchor the end state`
     bool        unconverged_leading = false; ///< the last arnoldi() ended without convergence
+    unsigned int restarts_used = 0;           ///< the restarts of the last arnoldi()
     dealii::Tensor<1, 3>              axis;
     dealii::Point<3>                  centre;
     std::unique_ptr<NodalVectorField> positions, velocities;
