@@ -1,19 +1,25 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Phase-2 accuracy of the mesh law (issue 22): the seeded prolate of prm/prolate.prm at refinement 3, relaxed to
 // t = 3.5. Its ⟨ω⟩[2.5, 3.5] and its smallest L² distance to the rotating equilibrium at L₀ are errors of the
-// discrete shape. The membrane law relative to the initial surface resolves the relaxed prolate worse than BGN's
-// conformal distribution (+0.46 % against −0.16 % in ⟨ω⟩[5, 10]); the experiments' law (conformal rows, the
-// membrane energy only where the mesh quality falls below 0.2) must stay within a factor 1.2 of `bgn` in both
-// figures, and the membrane law, run the same way, must not (the check can fail).
+// discrete shape. The membrane law relative to the initial surface (the default, `tangential law = membrane`)
+// resolves the relaxed prolate worse than BGN's conformal distribution (+0.46 % against −0.16 % in ⟨ω⟩[5, 10]);
+// the experiments' law (conformal rows, the membrane energy only from the first step with mesh quality below 0.2)
+// must be at least 1.2 times more accurate than the membrane law in both figures. The check fails if the pull acts
+// in phase 2 (the error then goes back to the membrane law's, doc/scheme.md) or if the two laws become the same.
+// Each run prints its lowest mesh quality: the experiments' law stays above 0.2, so its pull never acts here, and
+// since the body spins about its axis of symmetry (no rigid motion to carry) its step is then law `bgn`'s to
+// round-off (⟨ω⟩ equal to 2e-8 relative): comparing with `bgn`, as this test did before, could not fail.
 #include <deal.II/base/mpi.h>
 
 #include <fluid_surface/scenes/run_program.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -27,6 +33,30 @@ namespace
     double omega    = 0; ///< |⟨ω⟩ − ω_eq| / ω_eq
     double distance = 0; ///< min E(L²)
   };
+
+  /// The smallest value of the column @p name of the statistics file @p path (`# N: name` header lines).
+  double
+  column_minimum(const std::string &path, const std::string &name)
+  {
+    std::ifstream file(path);
+    int           column  = -1;
+    double        minimum = std::numeric_limits<double>::infinity();
+    for (std::string line; std::getline(file, line);)
+      if (line.rfind("# ", 0) == 0)
+        {
+          if (const auto colon = line.find(": "); colon != std::string::npos && line.substr(colon + 2) == name)
+            column = std::stoi(line.substr(2, colon - 2)) - 1;
+        }
+      else
+        {
+          std::istringstream values(line);
+          double             value;
+          for (int c = 0; values >> value; ++c)
+            if (c == column)
+              minimum = std::min(minimum, value);
+        }
+    return minimum;
+  }
 
   /// Runs the relaxing prolate with the entries @p law of `subsection mesh redistribution`; its errors.
   PhaseTwoErrors
@@ -65,7 +95,8 @@ namespace
                            std::stod(summary["min L2 distance to equilibrium"])};
     std::cout << name << ": exit status " << status << ", " << summary["status"] << std::setprecision(1)
               << std::scientific << ", <omega> error " << e.omega << ", min E(L2) " << e.distance
-              << std::defaultfloat << std::setprecision(6) << std::endl;
+              << std::defaultfloat << std::setprecision(3) << ", min mesh quality "
+              << column_minimum(directory + "/statistics", "mesh quality") << std::setprecision(6) << std::endl;
     return e;
   }
 } // namespace
@@ -75,14 +106,11 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const double factor = 1.2;
-  const PhaseTwoErrors bgn = run("bgn", "  set law = bgn\n");
   const PhaseTwoErrors experiments =
     run("conformal_with_pull",
         "  set tangential law = conformal\n  set pull onset quality = 0.2\n  set full pull quality = 0.2\n");
   const PhaseTwoErrors membrane = run("membrane", "  set tangential law = membrane\n");
-  auto within = [&](const PhaseTwoErrors &e) {
-    return (e.omega <= factor * bgn.omega && e.distance <= factor * bgn.distance) ? "yes" : "no";
-  };
-  std::cout << "conformal_with_pull within " << factor << " x bgn: " << within(experiments) << '\n'
-            << "membrane within " << factor << " x bgn: " << within(membrane) << std::endl;
+  const bool better = experiments.omega * factor <= membrane.omega && experiments.distance * factor <= membrane.distance;
+  std::cout << "conformal_with_pull at least " << factor << " x more accurate than membrane in both: "
+            << (better ? "yes" : "no") << std::endl;
 }
