@@ -6,7 +6,7 @@
 # t ≤ 100) at refinement 3 with the long runs' mesh law. Each run checkpoints (resume = auto, `steps per run` if
 # STEPS_PER_RUN is set): a queue cut off by the end of a session continues where it stopped when run again.
 #   benchmarks/end_states/run.sh [--quick]      from the repository root, after building
-#     (--quick: v = 0.75, L₀ = 10, both starts, refinement 2, t ≤ 5)
+#     (--quick: v = 0.75, L₀ = 10, both starts, refinement 2, t ≤ 5, in WORK/quick: results.csv there)
 # Environment: WORK (default benchmarks/end_states/work, not committed), EXE, JOBS (runs at once, default 1),
 # REFINEMENT (default 3), VS, L0S (override the grids), END (default 100: the last time a run may reach), STEPS_PER_RUN,
 # TAU_MAX (default 0.1).
@@ -18,7 +18,7 @@ here=benchmarks/end_states
 exe=${EXE:-$PWD/build/fluid_surface}
 work=${WORK:-$PWD/$here/work}
 vs=${VS:-"0.65 0.75 0.85 0.95"}; l0s=${L0S:-"0 5 10 20 40"}; refinement=${REFINEMENT:-3}; end=${END:-100}
-if [ "${1:-}" = "--quick" ]; then vs=0.75; l0s=10; refinement=2; end=5; fi
+if [ "${1:-}" = "--quick" ]; then vs=0.75; l0s=10; refinement=2; end=5; work=$work/quick; fi
 mkdir -p "$work"
 # The step of the shipped files (BDF2, co-rotating, one geometry correction, backward Euler after a rejection) at
 # τ_max = 0.1 everywhere. With the lab-frame backward-Euler step the rows v = 0.95, L₀ = 20 needed τ_max = 0.025:

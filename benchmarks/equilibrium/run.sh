@@ -7,7 +7,8 @@
 # Needs the built library: $BUILD_DIR (default: build) must hold libfluid_surface_library.so. The small driver
 # convergence.cc is compiled against it in $BUILD_DIR/benchmark_equilibrium (Release, -j1). Set
 # EQUILIBRIUM_DRIVER=/path/to/convergence to use an already compiled driver instead.
-# Writes benchmarks/equilibrium/results.csv, convergence.png and summary.md.
+# Writes benchmarks/equilibrium/results.csv, convergence.png and summary.md; --quick writes them to
+# benchmarks/equilibrium/quick/ instead (not committed). BUILD_LOCK=FILE: the driver's compile runs under flock FILE.
 set -euo pipefail
 
 here=benchmarks/equilibrium
@@ -23,6 +24,9 @@ for arg in "$@"; do
   esac
 done
 
+out=$here; [ -n "$quick" ] && out=$here/quick
+mkdir -p "$out"
+lock=(); [ -n "${BUILD_LOCK:-}" ] && lock=(flock "$BUILD_LOCK")
 driver="${EQUILIBRIUM_DRIVER:-}"
 if [ -z "$driver" ]; then
   build_dir="$(cd "${BUILD_DIR:-build}" 2>/dev/null && pwd)" || {
@@ -43,14 +47,14 @@ target_include_directories(convergence PRIVATE $PWD/include)
 target_link_libraries(convergence $build_dir/libfluid_surface_library.so)
 deal_ii_setup_target(convergence)
 CMAKE
-  cmake -S "$work" -B "$work/build" -DCMAKE_BUILD_TYPE=Release > /dev/null
-  cmake --build "$work/build" -j1 > /dev/null
+  "${lock[@]}" cmake -S "$work" -B "$work/build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+  "${lock[@]}" cmake --build "$work/build" -j1 > /dev/null
   driver="$work/build/convergence"
 fi
 
-"$driver" $quick "$here/results.csv" | tee "$here/summary.md"
+"$driver" $quick "$out/results.csv" | tee "$out/summary.md"
 
-/usr/bin/python3 - "$here/results.csv" "$here/convergence.png" <<'PYTHON'
+/usr/bin/python3 - "$out/results.csv" "$out/convergence.png" <<'PYTHON'
 import csv, sys
 import matplotlib
 matplotlib.use("Agg")

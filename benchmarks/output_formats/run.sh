@@ -4,10 +4,12 @@
 # file and the time series) and its bytes on disk, VTU (.vtu + its share of solution.pvd) against HDF5 (.h5 + its
 # share of solution.xdmf), on the ellipsoid [0.61, 0.61, 2.02] (Q2 geometry, 2×2 sub-cells per cell, 14 field
 # components as in scene full), refinements 4 and 5, 1 and 2 MPI ranks; WRITES (default 7) writes per case,
-# the median reported. --quick: refinement 3 only, 3 writes (overwrites results.csv and the plot too).
+# the median reported. --quick: refinement 3 only, 3 writes; its results.csv and plot go to
+# benchmarks/output_formats/quick/ (not committed).
 # Usage (from the repository root): benchmarks/output_formats/run.sh [--quick]
 #   BUILD_DIR (default: build) is a Release build directory of the project; the library is built there if missing,
 #   the driver in $BUILD_DIR/benchmark-output-formats. Writes benchmarks/output_formats/results.csv.
+#   BUILD_LOCK=FILE: the compiles run under flock FILE.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -16,14 +18,15 @@ if [ -z "$build" ]; then
   build="$root/build"; mkdir -p "$build"
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
 fi
-[ -f "$build/libfluid_surface_library.so" ] || make -C "$build" -j1 fluid_surface_library
-cmake -S "$here" -B "$build/benchmark-output-formats" -DCMAKE_BUILD_TYPE=Release \
+lock=(); [ -n "${BUILD_LOCK:-}" ] && lock=(flock "$BUILD_LOCK")
+[ -f "$build/libfluid_surface_library.so" ] || "${lock[@]}" make -C "$build" -j1 fluid_surface_library
+"${lock[@]}" cmake -S "$here" -B "$build/benchmark-output-formats" -DCMAKE_BUILD_TYPE=Release \
       -DFLUID_SURFACE_BUILD_DIR="$build" > /dev/null
-make -C "$build/benchmark-output-formats" -j1 > /dev/null
+"${lock[@]}" make -C "$build/benchmark-output-formats" -j1 > /dev/null
 driver="$build/benchmark-output-formats/output_formats_driver"
 
-writes=${WRITES:-7}; refinements="4 5"
-if [[ "${1:-}" == "--quick" ]]; then writes=3; refinements="3"; fi
+writes=${WRITES:-7}; refinements="4 5"; out=$here
+if [[ "${1:-}" == "--quick" ]]; then writes=3; refinements="3"; out=$here/quick; mkdir -p "$out"; fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 echo "refinement,ranks,format,cells,writes,median_s,min_s,max_s,file_bytes,series_bytes_per_step,bytes_per_step" \
@@ -51,5 +54,5 @@ PY
     done
   done
 done
-cp "$work/results.csv" "$here/results.csv"
-/usr/bin/python3 "$here/plot.py" "$here"
+cp "$work/results.csv" "$out/results.csv"
+/usr/bin/python3 "$here/plot.py" "$out"

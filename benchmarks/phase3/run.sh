@@ -5,15 +5,17 @@
 #   benchmarks/phase3/run.sh [--quick]        from the repository root, after building
 # Environment: REFINEMENTS (default "3 4"), LAWS (default "bgn reference"), END (default 7), LIMIT (wall-time
 # limit per case in s, default 3600), EXTRA (prm lines appended to every case, e.g. time stepping entries).
-# Each case writes cases/<case>.statistics and a row of results.csv; plot.py draws phase3.png.
+# Each case writes cases/<case>.statistics and a row of results.csv; plot.py draws phase3.png. --quick (refinement 2
+# to t = 0.3) writes cases/, results.csv and phase3.png to benchmarks/phase3/quick/ (not committed).
 set -u
 cd "$(dirname "$0")/../.."
 here=benchmarks/phase3
 exe=${EXE:-./build/fluid_surface}
 refinements=${REFINEMENTS:-"3 4"}; laws=${LAWS:-"bgn reference"}; end=${END:-7}; limit=${LIMIT:-3600}
-[ "${1:-}" = "--quick" ] && { refinements=2; end=0.3; limit=300; }
+out=$here
+[ "${1:-}" = "--quick" ] && { refinements=2; end=0.3; limit=300; out=$here/quick; }
 work=$(mktemp -d)
-mkdir -p $here/cases
+mkdir -p $out/cases
 for r in $refinements; do for law in $laws; do
   name=oblate_r${r}_$law
   cat > $work/$name.prm <<PRM
@@ -40,10 +42,10 @@ PRM
   start=$(date +%s.%N)
   timeout $limit $exe $work/$name.prm > $work/$name.log 2>&1; status=$?
   wall=$(echo "$(date +%s.%N) - $start" | bc)
-  cp $work/$name/statistics $here/cases/$name.statistics 2>/dev/null
-  cp $work/$name/summary $here/cases/$name.summary 2>/dev/null
-  /usr/bin/python3 $here/summarize.py $here/cases/$name.statistics $name $status $wall "$(grep -h 'error:' $work/$name.log | tail -1)" > $here/cases/$name.csv
+  cp $work/$name/statistics $out/cases/$name.statistics 2>/dev/null
+  cp $work/$name/summary $out/cases/$name.summary 2>/dev/null
+  /usr/bin/python3 $here/summarize.py $out/cases/$name.statistics $name $status $wall "$(grep -h 'error:' $work/$name.log | tail -1)" > $out/cases/$name.csv
 done; done
 { echo "case,exit,t reached,steps,rejected,t_sym_1e-4,t_sym_1e-2,median tau,min tau,max rise/(tau F),min mesh quality,max |dA/A|,max |dV/V|,max |dL/L|,F end,bending end,omega end,rigid fraction end,tilt end,max e,wall s,outcome"
-  cat $here/cases/*.csv; } > $here/results.csv
-/usr/bin/python3 $here/plot.py $here/cases $here/phase3.png
+  cat $out/cases/*.csv; } > $out/results.csv
+/usr/bin/python3 $here/plot.py $out/cases $out/phase3.png

@@ -2,12 +2,12 @@
 """benchmarks/prolate: ω(t) of every case, and the error of ⟨ω⟩[5, 10] and F(10) against wall time, relative to the
 rotating equilibrium at the run's initial angular momentum (results.csv, cases/*.statistics) → prolate.png; prints the
 README table."""
-import csv, glob
+import csv, glob, sys
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-here = "benchmarks/prolate"
+here = sys.argv[1] if len(sys.argv) > 1 else "benchmarks/prolate"  # the folder of results.csv and cases/
 
 
 def read(f):

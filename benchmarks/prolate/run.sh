@@ -6,14 +6,16 @@
 # REPEAT=n runs each case n times and records the median wall time (all of them in cases/<case>.walls).
 # --quick: refinement 2 only, to t = 2. Each case writes benchmarks/prolate/cases/r<ref>_tau<τ_max>.{csv,statistics,timing}
 # (cases may run in parallel, one invocation each); results.csv and prolate.png are then rebuilt from all cases.
+# --quick writes cases/, results.csv and prolate.png to benchmarks/prolate/quick/ (not committed).
 set -u
 here=benchmarks/prolate
 exe=${FLUID_SURFACE:-./build/fluid_surface}
 end=10; cases="2:0.05 3:0.05 3:0.025 4:0.05"
-[ "${1:-}" = "--quick" ] && { cases="2:0.05"; end=2; shift; }
+out=$here
+[ "${1:-}" = "--quick" ] && { cases="2:0.05"; end=2; out=$here/quick; shift; }
 [ $# -gt 0 ] && cases="$*"
 work=$(mktemp -d)
-mkdir -p $here/cases
+mkdir -p $out/cases
 header="refinement,unknowns,tau_max,end_time,completed,t_reached,mean_omega,final_energy,max_area_drift,max_volume_drift,max_angular_momentum_drift,steps,rejected,energy_rises_accepted,factorizations,wall_time_s"
 for c in $cases; do
   r=${c%%:*}; tau=${c##*:}; name=r${r}_tau${tau}
@@ -32,12 +34,12 @@ for c in $cases; do
   t_reached=$(awk '!/^#/{t=$2} END{print t}' $work/$name/statistics)
   get() { grep "^$1:" $work/$name/summary 2>/dev/null | sed "s/^$1: //; s/ .*//" ; }
   completed=$([ $status -eq 0 ] && echo 1 || echo 0)
-  echo "$r,$unknowns,$tau,$end,$completed,$t_reached,$(get 'mean angular velocity'),$(get 'final total energy'),$(get 'max area drift'),$(get 'max volume drift'),$(get 'max angular momentum drift'),$(get steps),$(get 'rejected steps'),$(get 'energy rises accepted'),$(get 'LU factorizations'),$wall" > $here/cases/$name.csv
-  echo "$walls" > $here/cases/$name.walls
-  cp $work/$name/statistics $here/cases/$name.statistics 2>/dev/null
-  cp $work/$name/timing $here/cases/$name.timing 2>/dev/null
-  tail -n 3 $work/$name.log > $here/cases/$name.tail
+  echo "$r,$unknowns,$tau,$end,$completed,$t_reached,$(get 'mean angular velocity'),$(get 'final total energy'),$(get 'max area drift'),$(get 'max volume drift'),$(get 'max angular momentum drift'),$(get steps),$(get 'rejected steps'),$(get 'energy rises accepted'),$(get 'LU factorizations'),$wall" > $out/cases/$name.csv
+  echo "$walls" > $out/cases/$name.walls
+  cp $work/$name/statistics $out/cases/$name.statistics 2>/dev/null
+  cp $work/$name/timing $out/cases/$name.timing 2>/dev/null
+  tail -n 3 $work/$name.log > $out/cases/$name.tail
 done
-{ echo "$header"; cat $here/cases/*.csv; } > $here/results.csv
-/usr/bin/python3 $here/plot.py
-cat $here/results.csv
+{ echo "$header"; cat $out/cases/*.csv; } > $out/results.csv
+/usr/bin/python3 $here/plot.py $out
+cat $out/results.csv

@@ -4,16 +4,20 @@ import argparse, csv, glob, os, random, shutil, signal, subprocess, sys, tempfil
 
 here = os.path.dirname(os.path.abspath(__file__))
 parser = argparse.ArgumentParser()
-parser.add_argument("--quick", action="store_true", help="5 trials")
+parser.add_argument("--quick", action="store_true", help="5 trials, results in quick/ (not committed)")
 parser.add_argument("--trials", type=int, default=25)
 parser.add_argument("--kills", type=int, default=4, help="SIGKILLs per trial (at most; a run may finish first)")
 parser.add_argument("--np", type=int, default=1, help="MPI ranks (mpirun when > 1)")
 parser.add_argument("--seed", type=int, default=2026)
 parser.add_argument("--plot-only", action="store_true", help="redraw the PNG from results.csv")
 parser.add_argument("--exe", default=os.environ.get("FLUID_SURFACE", "./build/fluid_surface"))
+parser.add_argument("--out", default=None, help="folder of results.csv and restart_stress.png (default: this "
+                    "benchmark's folder, with --quick its quick/ subfolder)")
 args = parser.parse_args()
 if args.quick:
     args.trials = 5
+out = args.out or (os.path.join(here, "quick") if args.quick else here)
+os.makedirs(out, exist_ok=True)
 random.seed(args.seed)
 
 
@@ -36,11 +40,11 @@ def plot(rows):
     ax.set_title(f"{sum(kills)} kills in {len(rows)} trials: {sum(ok)}/{len(rows)} survived with identical results")
     ax.legend(loc="upper left", fontsize=8, ncol=2)
     fig.tight_layout()
-    fig.savefig(os.path.join(here, "restart_stress.png"), dpi=120)
+    fig.savefig(os.path.join(out, "restart_stress.png"), dpi=120)
 
 
 if args.plot_only:
-    plot(list(csv.DictReader(open(os.path.join(here, "results.csv")))))
+    plot(list(csv.DictReader(open(os.path.join(out, "results.csv")))))
     sys.exit(0)
 
 PRM = """subsection model
@@ -230,7 +234,7 @@ for trial in range(1, args.trials + 1):
     print(f"trial {trial}: {kills} kills ({kills_in_checkpoint} during a checkpoint write), "
           f"survived {survived}, identical {identical}, statistics equal to 1e-9: {agrees}", flush=True)
 
-with open(os.path.join(here, "results.csv"), "w", newline="") as f:
+with open(os.path.join(out, "results.csv"), "w", newline="") as f:
     writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
     writer.writeheader()
     writer.writerows(rows)

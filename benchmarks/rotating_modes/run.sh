@@ -5,11 +5,13 @@
 # (`time stepping/frame = Tisserand`), backward Euler and BDF2, against the linearized rate σ of scene stability and
 # the one-mode prediction ln|z(λτ)|/τ (predict.py) with λ = σ + iν_seen, ν_seen = ν + mΩ (lab) or ν (co-rotating).
 #   benchmarks/rotating_modes/run.sh [--quick]        from the repository root, after building
-#     --quick: the oblate's m = 2 even at refinement 2, τ = 0.1 and 0.05 (8 runs, minutes)
+#     --quick: the oblate's m = 2 even at refinement 2, τ = 0.1 and 0.05 (8 runs, minutes), in WORK/quick; its table
+#     is WORK/quick/results.csv (the committed results_quick.csv is an earlier quick run, not overwritten)
 # Environment: WORK (default benchmarks/rotating_modes/work, not committed), EXE, JOBS (runs at once, default 1),
 # REFINEMENT (default 3), TAUS (default "0.1 0.05 0.025"), CASES (default: the three modes below), SCHEMES
 # (default "be bdf2"; bdf2 is the shipped BDF2 with the linear predictor of the geometry, bdf2s the one from S^m,
-# bdf2q the quadratic one, bdf2n quadratic normal; sdirk2 the two-stage SDIRK with the linear predictor, sdirk2s from S^m), FRAMES (default "lab Tisserand"), OUT (default results.csv, results_quick.csv with --quick).
+# bdf2q the quadratic one, bdf2n quadratic normal; sdirk2 the two-stage SDIRK with the linear predictor, sdirk2s from S^m), FRAMES (default "lab Tisserand"), OUT (default results.csv, results_quick.csv at REFINEMENT=2; with --quick
+# WORK/quick/results.csv).
 set -u
 cd "$(dirname "$0")/../.."
 here=benchmarks/rotating_modes
@@ -18,7 +20,12 @@ work=${WORK:-$PWD/$here/work}
 refinement=${REFINEMENT:-3}; taus=${TAUS:-"0.1 0.05 0.025"}
 cases=${CASES:-"oblate:2:even prolate:1:even prolate:2:even"}
 end=3
-if [ "${1:-}" = "--quick" ]; then refinement=2; taus="0.1 0.05"; cases="oblate:2:even"; end=2.5; shift; fi
+out=$here/${OUT:-results$([ $refinement = 2 ] && echo _quick).csv}
+if [ "${1:-}" = "--quick" ]; then
+  refinement=2; taus="0.1 0.05"; cases="oblate:2:even"; end=2.5; work=$work/quick; out=$work/results.csv
+  [ -n "${OUT:-}" ] && out=$here/$OUT
+  shift
+fi
 mkdir -p "$work"
 queue=""
 for c in $cases; do
@@ -50,6 +57,5 @@ run_one() {
 }
 export -f run_one; export exe work
 echo $queue | tr ' ' '\n' | xargs -P "${JOBS:-1}" -I{} bash -c 'run_one {}'
-out=$here/${OUT:-results$([ $refinement = 2 ] && echo _quick).csv}
 /usr/bin/python3 $here/table.py "$work" $queue > "$out.tmp" && mv "$out.tmp" "$out"
 cat "$out"

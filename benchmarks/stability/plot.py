@@ -1,11 +1,11 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """benchmarks/stability: F(t) and τ(t) of every case (cases/*.statistics) → stability.png; prints the README table."""
-import csv, glob
+import csv, glob, sys
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-here = "benchmarks/stability"
+here = sys.argv[1] if len(sys.argv) > 1 else "benchmarks/stability"  # the folder of results.csv and cases/
 
 
 def read(f):

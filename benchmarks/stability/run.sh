@@ -11,15 +11,16 @@
 # elongated: a 1:5 spheroid [0.4, 0.4, 2] (refinements ELONGATED_REFINEMENTS, default "3 4") released from rest and
 #            spun at ω0 = 2, adaptive τ, to t = 5.
 # Each case writes a row to benchmarks/stability/cases/<name>.csv and keeps its statistics; results.csv and
-# stability.png are rebuilt from all cases. --quick: one short case per part.
+# stability.png are rebuilt from all cases. --quick: one short case per part; its cases/, results.csv and stability.png
+# go to benchmarks/stability/quick/ (not committed).
 set -u
 here=benchmarks/stability
 exe=${FLUID_SURFACE:-./build/fluid_surface}
 limit=${LIMIT:-600}
-quick=0; [ "${1:-}" = "--quick" ] && { quick=1; shift; }
+quick=0; out=$here; [ "${1:-}" = "--quick" ] && { quick=1; out=$here/quick; shift; }
 parts="${*:-fixed perturbed elongated}"
 work=$(mktemp -d)
-mkdir -p $here/cases
+mkdir -p $out/cases
 
 # run NAME PRM-BODY: runs one case (base file and overrides) with the wall-time limit, records a row.
 run() {
@@ -35,7 +36,7 @@ PRM
   local start=$(date +%s.%N)
   timeout $limit $exe $work/$name.prm > $work/$name.log 2>&1; local status=$?
   local stop=$(date +%s.%N)
-  /usr/bin/python3 - "$work/$name" "$name" "$status" "$(echo "$stop - $start" | bc)" > $here/cases/$name.csv <<'PY'
+  /usr/bin/python3 - "$work/$name" "$name" "$status" "$(echo "$stop - $start" | bc)" > $out/cases/$name.csv <<'PY'
 import sys
 d, name, status, wall = sys.argv[1:]
 names, rows = [], []
@@ -58,7 +59,7 @@ print(",".join([name, status, f"{col['time'][-1]:.6g}", str(len(rows) - 1), f"{m
                 str(rises), f"{F[0]:.8g}", f"{F[-1]:.8g}", f"{min(col['mesh quality']):.3g}",
                 f"{max(col['symmetry deviation']):.3g}", wall, '"' + outcome.replace('"', "'") + '"']))
 PY
-  cp $work/$name/statistics $here/cases/$name.statistics 2>/dev/null
+  cp $work/$name/statistics $out/cases/$name.statistics 2>/dev/null
 }
 
 for part in $parts; do
@@ -111,5 +112,5 @@ end"
     done; done ;;
   esac
 done
-{ echo "case,exit,t_reached,steps,tau_max_used,tau_min_used,energy_rises,F0,F_end,min_mesh_quality,max_symmetry_deviation,wall_time_s,outcome"; cat $here/cases/*.csv; } > $here/results.csv
-/usr/bin/python3 $here/plot.py
+{ echo "case,exit,t_reached,steps,tau_max_used,tau_min_used,energy_rises,F0,F_end,min_mesh_quality,max_symmetry_deviation,wall_time_s,outcome"; cat $out/cases/*.csv; } > $out/results.csv
+/usr/bin/python3 $here/plot.py $out

@@ -5,12 +5,13 @@
 # (`linear solver/reuse factorization = false`, the previous behaviour) and reused as the GMRES preconditioner.
 # The rotating prolate of prm/prolate.prm, t ∈ [0, T] (T = 0.2; --quick: 0.05), refinements 2 and 3, 3 runs each.
 # Run from the repository root: FLUID_SURFACE=./build/fluid_surface benchmarks/step_cost/run.sh [--quick]
+# --quick writes results.csv and step_cost.png to benchmarks/step_cost/quick/ (not committed).
 set -uo pipefail
 exe=${FLUID_SURFACE:-./build/fluid_surface}
 out=benchmarks/step_cost
 work=$(mktemp -d)
 end=0.2; repeats=3; refinements="2 3"
-if [[ "${1:-}" == "--quick" ]]; then end=0.05; repeats=1; refinements="2"; fi
+if [[ "${1:-}" == "--quick" ]]; then end=0.05; repeats=1; refinements="2"; out=$out/quick; mkdir -p $out; fi
 echo "refinement,unknowns,reuse,run,steps,rejected,factorizations,wall_per_step,assembly,factorization,linear_solve,curvature_energy,diagnostics,output" > $work/results.csv
 for run in $(seq 1 $repeats); do
   for r in $refinements; do

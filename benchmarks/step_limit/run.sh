@@ -11,7 +11,9 @@
 #    energy rise above 'energy tolerance', ends the case) for each scheme.
 # Environment: CASES (default "prolate:3 oblate:3"), TAUS, SCHEMES (default "lagged anderson"; also aitken, normal, metric), WINDOW (0.5),
 # WORK (default benchmarks/step_limit/work, not committed), ITERATIONS (N_g of the iterated schemes, default 10), LIMIT (s/case).
-# Rows go to cases/<case>.csv, results.csv collects them; plot.py draws step_limit.png.
+# Rows go to cases/<case>.csv, results.csv collects them; plot.py draws step_limit.png. --quick: the oblate at
+# refinement 3, τ = 0.05 and 0.0125, a window of 0.1, lagged and anderson; its cases/, results.csv and step_limit.png go
+# to benchmarks/step_limit/quick/ (not committed), its runs to WORK/quick (the start checkpoint is WORK's, shared).
 set -u
 cd "$(dirname "$0")/../.."
 here=benchmarks/step_limit
@@ -23,8 +25,9 @@ window=${WINDOW:-0.5}
 iterations=${ITERATIONS:-10}
 limit=${LIMIT:-3600}
 work=${WORK:-$PWD/benchmarks/step_limit/work}
-if [ "${1:-}" = "--quick" ]; then cases="oblate:3"; taus="0.05 0.0125"; window=0.1; fi
-mkdir -p "$work" $here/cases
+out=$here; runs=$work
+if [ "${1:-}" = "--quick" ]; then cases="oblate:3"; taus="0.05 0.0125"; window=0.1; out=$here/quick; runs=$work/quick; fi
+mkdir -p "$work" "$runs" $out/cases
 
 # lagged: one solve on S^m. aitken, anderson: the implicit geometry with that relaxation. normal, metric: only ñ (with
 # c) or only the metric from the iterate (which lagged quantity sets the limit), Anderson's mixing. all1, normal1:
@@ -74,10 +77,10 @@ PRM
   fi
   for s in $schemes; do for tau in $taus; do
     name=${shape}_r${r}_${s}_tau$tau
-    dir=$work/$name
+    dir=$runs/$name
     rm -rf $dir; mkdir -p $dir
     cp -r $start/checkpoint $start/statistics $dir/
-    cat > $work/$name.prm <<PRM
+    cat > $runs/$name.prm <<PRM
 include $PWD/prm/${shape}_long.prm
 subsection geometry
   set refinement = $r
@@ -99,13 +102,13 @@ end
 $(scheme_lines $s)
 PRM
     begin=$(date +%s.%N)
-    timeout $limit $exe $work/$name.prm > $work/$name.log 2>&1; status=$?
+    timeout $limit $exe $runs/$name.prm > $runs/$name.log 2>&1; status=$?
     wall=$(echo "$(date +%s.%N) - $begin" | bc)
     /usr/bin/python3 $here/summarize.py $dir/statistics "$shape" "$r" "$s" "$tau" "$t0" "$window" "$status" "$wall" \
-      "$(grep -h -m1 'rejected at' $work/$name.log | head -c 300)" > $here/cases/$name.csv
-    tail -1 $here/cases/$name.csv
+      "$(grep -h -m1 'rejected at' $runs/$name.log | head -c 300)" > $out/cases/$name.csv
+    tail -1 $out/cases/$name.csv
   done; done
 done
 { echo "shape,refinement,scheme,tau,t0,window,exit,t reached,completed,steps,F end,max rise/(tau F),geometry iterations mean,geometry iterations max,factorizations,wall s,s per step,reason"
-  cat $here/cases/*.csv; } > $here/results.csv
-/usr/bin/python3 $here/plot.py $here/results.csv $here/step_limit.png
+  cat $out/cases/*.csv; } > $out/results.csv
+/usr/bin/python3 $here/plot.py $out/results.csv $out/step_limit.png

@@ -6,7 +6,8 @@
 #   --multiplier re-runs only the Lagrange-multiplier tangentiality cases and keeps the other rows.
 #   BUILD_DIR (default: build) is a Release build directory of the project; the library is built
 #   there if missing, the driver in $BUILD_DIR/benchmark-surface-stokes.
-# Writes benchmarks/surface_stokes/results.csv and work_precision.png.
+# Writes benchmarks/surface_stokes/results.csv and work_precision.png; --quick writes them to
+# benchmarks/surface_stokes/quick/ (not committed). BUILD_LOCK=FILE: the compiles run under flock FILE.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -15,8 +16,12 @@ if [ -z "$build" ]; then
   build="$root/build"; mkdir -p "$build"
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
 fi
-[ -f "$build/libfluid_surface_library.so" ] || make -C "$build" -j1 fluid_surface_library
-cmake -S "$here" -B "$build/benchmark-surface-stokes" -DCMAKE_BUILD_TYPE=Release \
+lock=(); [ -n "${BUILD_LOCK:-}" ] && lock=(flock "$BUILD_LOCK")
+[ -f "$build/libfluid_surface_library.so" ] || "${lock[@]}" make -C "$build" -j1 fluid_surface_library
+"${lock[@]}" cmake -S "$here" -B "$build/benchmark-surface-stokes" -DCMAKE_BUILD_TYPE=Release \
       -DFLUID_SURFACE_BUILD_DIR="$build" > /dev/null
-make -C "$build/benchmark-surface-stokes" -j1 > /dev/null
-/usr/bin/python3 "$here/run_cases.py" "$build/benchmark-surface-stokes/surface_stokes_driver" "$here" "$@"
+"${lock[@]}" make -C "$build/benchmark-surface-stokes" -j1 > /dev/null
+out=$here
+for a in "$@"; do [ "$a" = --quick ] && out=$here/quick; done
+mkdir -p "$out"
+/usr/bin/python3 "$here/run_cases.py" "$build/benchmark-surface-stokes/surface_stokes_driver" "$out" "$@"

@@ -13,6 +13,27 @@ multiplier_only = "--multiplier" in sys.argv[3:]
 repeats = 1 if quick else 3
 workdir = tempfile.mkdtemp(prefix="surface_stokes_")
 
+# The driver's result lines (driver.cc); any other line on its stdout (a library's or MPI's message) is passed on to
+# stderr and does not stop the run; a missing result line does, with the driver's whole output.
+RESULT_KEYS = ("area", "dofs", "velocity", "tangential", "gradient", "pressure", "normal", "energy change",
+               "measured rate", "exact rate", "steps", "total iterations", "max iterations", "factorizations",
+               "assemble time", "solve time", "wall time")
+
+
+def parse(out, args):
+    r = {}
+    for line in out.splitlines():
+        key, sep, value = line.partition(": ")
+        if sep and key in RESULT_KEYS:
+            r[key] = value.strip()
+        elif line.strip():
+            print("driver:", line, file=sys.stderr)
+    missing = [k for k in RESULT_KEYS if k not in r]
+    if missing:
+        sys.exit(f"run_cases.py: no {', '.join(missing)} in the output of {' '.join(args)}:\n{out}")
+    return r
+
+
 def run(settings, repeat=repeats, threads=None):
     """One case; settings: dict 'section/entry' -> value. Returns the driver's key: value dict
     with 'wall time' (and solve/assemble time) replaced by the median over `repeat` runs.
@@ -25,7 +46,7 @@ def run(settings, repeat=repeats, threads=None):
     results = []
     for _ in range(repeat):
         out = subprocess.run(args, check=True, capture_output=True, text=True, env=env).stdout
-        results.append(dict(line.split(": ", 1) for line in out.strip().splitlines()))
+        results.append(parse(out, args))
     r = dict(results[0])
     for key in ("wall time", "solve time", "assemble time"):
         r[key] = statistics.median(float(x[key]) for x in results)

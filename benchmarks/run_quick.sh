@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
+# benchmarks/run_quick.sh: every benchmarks/<name>/run.sh --quick in turn, with pass/fail and wall time of each.
+#
+# Usage, after the README's build (cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build -j2):
+#   benchmarks/run_quick.sh [NAME ...]        NAME: a folder of benchmarks/ (default: every folder with a run.sh)
+#   nice -n 19 benchmarks/run_quick.sh        beside other work
+# Environment:
+#   BUILD_DIR   the build directory (default: build in this checkout). Its fluid_surface is the program every
+#               benchmark runs (passed on as EXE, FLUID_SURFACE and BINARY), its libfluid_surface_library.so the
+#               library the drivers of equilibrium, output_formats and surface_stokes link (BUILD_DIR is passed on);
+#               they are compiled there (geometry compiles its own in benchmarks/geometry/build). Another checkout's
+#               build can be used by a directory that holds only links to its fluid_surface and
+#               libfluid_surface_library.so (the drivers of this checkout then compile into that directory).
+#   LOGS        where each benchmark's output goes, as <name>.log, and the table times.csv (default:
+#               benchmarks/quick_logs, not committed).
+#   LIMIT       seconds a benchmark may take before it is stopped and counted as failed (default 3600).
+#   BUILD_LOCK  a lock file: the benchmarks' compiles run under `flock BUILD_LOCK` (passed on).
+# A benchmark passes when its run.sh --quick exits with 0 and leaves the committed files of its folder as they were
+# (checked with git when this is a git checkout): --quick writes to quick/ or work/ subfolders, which are not
+# committed, never over the committed tables and plots of the full runs. Exit status: 0 when every benchmark passed.
+#
+# Measured (git clone of main, drivers compiled on the way, every run under nice -n 19 beside other compiles and
+# runs on the 2 cores, so loaded): see benchmarks/quick_times.csv.
+set -u
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+build=$(cd "${BUILD_DIR:-build}" 2>/dev/null && pwd) || { echo "run_quick.sh: no build directory '${BUILD_DIR:-build}'; build the project first (README.md)" >&2; exit 2; }
+[ -x "$build/fluid_surface" ] || { echo "run_quick.sh: no $build/fluid_surface; build the project first (README.md)" >&2; exit 2; }
+logs=${LOGS:-$root/benchmarks/quick_logs}
+mkdir -p "$logs"
+logs=$(cd "$logs" && pwd)
+limit=${LIMIT:-3600}
+export BUILD_DIR=$build EXE=$build/fluid_surface FLUID_SURFACE=$build/fluid_surface BINARY=$build/fluid_surface
+[ -n "${BUILD_LOCK:-}" ] && export BUILD_LOCK
+names=${*:-$(for f in benchmarks/*/run.sh; do basename "$(dirname "$f")"; done)}
+git=0; git -C "$root" rev-parse --is-inside-work-tree > /dev/null 2>&1 && git=1
+# the committed files of a folder that differ from HEAD (or are deleted), and its files that git would add
+changed() { git -C "$root" status --porcelain --untracked-files=all -- "benchmarks/$1" 2>/dev/null | sort; }
+
+echo "benchmark,status,wall_s,note" > "$logs/times.csv"
+failed=0; total_start=$(date +%s.%N)
+printf '%-16s %-6s %9s  %s\n' benchmark status "wall [s]" note
+for name in $names; do
+  [ -x "benchmarks/$name/run.sh" ] || { echo "run_quick.sh: no benchmarks/$name/run.sh" >&2; failed=1; continue; }
+  [ $git = 1 ] && before=$(changed "$name")
+  start=$(date +%s.%N)
+  timeout "$limit" "benchmarks/$name/run.sh" --quick < /dev/null > "$logs/$name.log" 2>&1
+  status=$?
+  wall=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.0f", b - a }')
+  note=""
+  if [ $status = 124 ]; then note="stopped after $limit s"
+  elif [ $status != 0 ]; then note="exit $status, see $logs/$name.log"
+  fi
+  if [ $git = 1 ]; then
+    new=$(comm -13 <(echo "$before") <(changed "$name") | sed 's/^...//' | tr '\n' ' ')
+    [ -n "$new" ] && note="${note:+$note; }wrote committed or unignored files: $new"
+  fi
+  result=pass; [ -n "$note" ] && { result=FAIL; failed=1; }
+  printf '%-16s %-6s %9s  %s\n' "$name" $result "$wall" "$note"
+  echo "$name,$result,$wall,\"$note\"" >> "$logs/times.csv"
+done
+total=$(awk -v a="$total_start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.0f", b - a }')
+printf '%-16s %-6s %9s\n' total "" "$total"
+echo "total,,$total," >> "$logs/times.csv"
+echo "logs and times.csv in $logs"
+exit $failed
