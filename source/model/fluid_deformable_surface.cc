@@ -410,17 +410,19 @@ namespace FluidSurface
   }
 
   void
-  FluidDeformableSurface::set_time_scheme(const TimeScheme::Kind kind, const TimeScheme::Frame frame)
+  FluidDeformableSurface::set_time_scheme(const TimeStepper &time)
   {
-    const bool on = kind != TimeScheme::Kind::backward_euler;
+    step.set_time_scheme(time.scheme(), time.frame());
+    const TimeScheme                &scheme = step.time_scheme_of_flow_steps();
+    const TimeScheme::StepRatioLimit limit  = scheme.step_ratio_limit();
+    time.limit_step_ratio(limit.ratio, limit.reason);
     const GeometryIteration &iteration = step.components().geometry_iteration;
-    if (on && !(iteration.enabled() && iteration.apply == GeometryIteration::Apply::always &&
-                iteration.time_level == 1))
+    if (scheme.needs_new_level_geometry() && !(iteration.enabled() && iteration.apply == GeometryIteration::Apply::always &&
+                                               iteration.time_level == 1))
       throw_invalid_entry("time stepping/scheme",
-                          kind == TimeScheme::Kind::bdf2 ? "BDF2" : "SDIRK2",
+                          scheme.name(),
                           "'backward Euler', or 'geometry iteration/maximum iterations' ≥ 1 with apply = always and "
                           "time level = 1 (a second-order scheme needs the geometry of its new time level; a lagged "
                           "geometry is first order)");
-    step.set_time_scheme(kind, frame);
   }
 } // namespace FluidSurface

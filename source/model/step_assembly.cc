@@ -90,10 +90,9 @@ namespace FluidSurface
     class FlowTerm : public StepTerm
     {
     public:
-      FlowTerm(const StepComponents &components, const bool carried_frame)
+      explicit FlowTerm(const StepComponents &components)
         : flow(components.flow)
         , regularization(components.momentum_constraints.regularization())
-        , carried_frame(carried_frame)
       {}
       void
       gauss_point(const unsigned int q, CellContext &cell) const override
@@ -111,14 +110,14 @@ namespace FluidSurface
         // In the carried frame (ũ = Qᵀu, the new position relative to the carry) the frame's rotation adds
         // (Ω × ũ, v), and the mesh velocity in the convection is R + (Ỹ − X^m)/τ, i.e. W = X^m − τR.
         const Point<3> frame_point = data.frame_velocity_on_new_surface ? p.position : old_point;
-        const Point<3> start       = carried_frame && !data.relative_transport ?
-                                       old_point - tau * data.carried.value(frame_point) :
+        const Point<3> start       = data.frame.kind == StepFrame::Kind::carried ?
+                                       old_point - tau * data.frame.carried.value(frame_point) :
                                        old_point;
-        const bool turning = carried_frame && flow.inertia;
+        const bool turning = data.frame.solved_in_frame() && flow.inertia;
         for (const unsigned int j : layout.velocity)
           {
             if (turning)
-              cell.turned_velocity[j] = SurfaceFluid::turned_velocity(p, j, data.carried.rotation);
+              cell.turned_velocity[j] = SurfaceFluid::turned_velocity(p, j, data.frame.carried.rotation);
             if (flow.convection)
               cell.convected_velocity[j] = SurfaceFluid::convected_velocity(p, j);
           }
@@ -156,7 +155,6 @@ namespace FluidSurface
     private:
       const SurfaceFluid &flow;
       const double        regularization;
-      const bool          carried_frame;
     };
 
     /// (u, v) = (u_prescribed, v) and (p, q) = 0: the L² projection of a prescribed velocity (in the carried
@@ -175,11 +173,11 @@ namespace FluidSurface
         LocalSystem            &local  = *cell.local;
         const FlowPointValues  &p      = cell.point.flow;
         const double            dA     = p.JxW;
-        const Point<3>          y      = data.carried.carry(p.position, data.tau);
+        const Point<3>          y      = data.frame.carried.carry(p.position, data.tau);
         Tensor<1, 3>            u;
         for (unsigned int d = 0; d < 3; ++d)
           u[d] = velocity.value(y, d);
-        u = transpose(data.carried.rotation_over(data.tau)) * u;
+        u = transpose(data.frame.carried.rotation_over(data.tau)) * u;
         for (const unsigned int i : layout.velocity)
           {
             local.rhs(i) += (u * p.velocity[i]) * dA;
@@ -235,9 +233,8 @@ namespace FluidSurface
     class BgnMeshLawTerm : public StepTerm
     {
     public:
-      BgnMeshLawTerm(const MeshRedistribution &redistribution, const bool co_rotating)
+      explicit BgnMeshLawTerm(const MeshRedistribution &redistribution)
         : redistribution(redistribution)
-        , co_rotating(co_rotating)
       {}
       void
       gauss_point(const unsigned int, CellContext &cell) const override
@@ -250,22 +247,21 @@ namespace FluidSurface
         const StepAssemblyData &data = *cell.data;
         const Point<3>          x(cell.nodal_old_position[q]);
         LocalSystem            &local = *cell.local;
-        if (co_rotating)
+        if (data.frame.co_rotating())
           {
             const Point<3> frame_point = data.frame_velocity_on_new_surface ? cell.nodal.position : x;
             redistribution.assemble_kinematics(
-              cell.nodal, *cell.layout, data.tau, x - data.tau * data.carried.value(frame_point), local.matrix, local.rhs);
+              cell.nodal, *cell.layout, data.tau, x - data.tau * data.frame.carried.value(frame_point), local.matrix, local.rhs);
             redistribution.assemble_nodal_terms(cell.nodal, *cell.layout, data.tau, x, local.matrix, local.rhs);
             return;
           }
         redistribution.assemble_kinematics(cell.nodal, *cell.layout, data.tau, x, local.matrix, local.rhs);
         redistribution.assemble_nodal_terms(
-          cell.nodal, *cell.layout, data.tau, x + data.tau * data.carried.value(x), local.matrix, local.rhs);
+          cell.nodal, *cell.layout, data.tau, x + data.tau * data.frame.carried.value(x), local.matrix, local.rhs);
       }
 
     private:
       const MeshRedistribution &redistribution;
-      const bool                co_rotating;
     };
 
     /**
@@ -318,7 +314,7 @@ namespace FluidSurface
         const Point<3>          x(cell.nodal_old_position[q]);
         const Point<3> frame_point = data.frame_velocity_on_new_surface ? nodal.position : x;
         redistribution.assemble_kinematics(
-          nodal, layout, data.tau, x - data.tau * data.carried.value(frame_point), local.matrix, local.rhs);
+          nodal, layout, data.tau, x - data.tau * data.frame.carried.value(frame_point), local.matrix, local.rhs);
         redistribution.assemble_nodal_terms(nodal, layout, data.tau, x, local.matrix, local.rhs);
         // The nodal rule's points are the nodes: the node whose shape function is 1 here.
         for (unsigned int n = 0; n < layout.new_position_nodes.size(); ++n)
@@ -387,10 +383,7 @@ namespace FluidSurface
     };
   } // namespace
 
-  StepAssembly::StepAssembly(const StepComponents &components,
-                             const StepRequest    &request,
-                             const bool            co_rotating,
-                             StepSystem           &system)
+  StepAssembly::StepAssembly(const StepComponents &components, const StepRequest &request, StepSystem &system)
     : components(components)
     , system(system)
     , rigid(components.momentum_constraints.active())
@@ -400,14 +393,14 @@ namespace FluidSurface
       terms.push_back(std::make_unique<PrescribedVelocityTerm>(*request.prescribed_velocity()));
     else
       {
-        terms.push_back(std::make_unique<FlowTerm>(components, reference || co_rotating));
+        terms.push_back(std::make_unique<FlowTerm>(components));
         terms.push_back(std::make_unique<BendingForceTerm>(components.bending));
       }
     terms.push_back(std::make_unique<BendingScalarTerm>(components.bending));
     if (reference)
       terms.push_back(std::make_unique<ReferenceMeshLawTerm>(components.redistribution));
     else
-      terms.push_back(std::make_unique<BgnMeshLawTerm>(components.redistribution, co_rotating));
+      terms.push_back(std::make_unique<BgnMeshLawTerm>(components.redistribution));
     terms.push_back(std::make_unique<VolumeColumnTerm>(components.volume_constraint));
     if (rigid)
       terms.push_back(std::make_unique<MomentumConstraintTerm>(components.momentum_constraints));
@@ -448,9 +441,9 @@ namespace FluidSurface
         context.transport_velocity = context.old_velocity;
       context.flow[vector].get_function_gradients(data.transport_fields, context.old_velocity_gradient);
       context.geometry[vector].get_function_values(data.old_position, context.old_position);
-      if (data.relative_transport)
+      if (data.frame.co_rotating())
         for (unsigned int q = 0; q < context.flow.n_quadrature_points; ++q)
-          context.transport_velocity[q] -= data.carried.value(data.frame_velocity_on_new_surface ?
+          context.transport_velocity[q] -= data.frame.carried.value(data.frame_velocity_on_new_surface ?
                                                                 context.flow.quadrature_point(q) :
                                                                 Point<3>(context.old_position[q]));
       for (const auto &term : terms)

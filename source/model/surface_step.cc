@@ -60,10 +60,7 @@ namespace FluidSurface
     const StepRequest &request;
     const double       tau;   ///< the step
     const StepStart   &start; ///< its backward-Euler form
-    const RigidMotion &motion; ///< the rigid motion of the shape and the momenta of u^m
-    const RigidMotion  carried; ///< the rigid motion the mesh follows (none: RigidMotion())
-    const bool         carried_frame; ///< law reference: the step is solved in the frame carried by `motion`
-    const bool         co_rotating;   ///< the frame is the Tisserand frame of u^m (TimeScheme::co_rotating())
+    const StepFrame   &frame; ///< the frame it is solved in
     const SurfaceGeometry::Measures old_measures; ///< of S^m
     const SurfaceGeometry::Curvature &old_curvature; ///< of S^m
     const double       membrane_weight;
@@ -78,7 +75,7 @@ namespace FluidSurface
     : geometry(geometry)
     , state(state)
     , system(geometry)
-    , time_scheme(TimeScheme::create(TimeScheme::Kind::backward_euler))
+    , time_scheme(std::make_unique<BackwardEuler>())
   {}
 
   SurfaceStep::~SurfaceStep() = default;
@@ -97,9 +94,10 @@ namespace FluidSurface
   }
 
   void
-  SurfaceStep::set_time_scheme(const TimeScheme::Kind kind, const TimeScheme::Frame frame)
+  SurfaceStep::set_time_scheme(const std::string &name, const FlowStepFrame frame)
   {
-    time_scheme = TimeScheme::create(kind, frame, parts.geometry_iteration.predictor);
+    time_scheme = TimeScheme::create(name, parts.geometry_iteration.predictor);
+    flow_step_frame = frame;
   }
 
   void
@@ -108,6 +106,34 @@ namespace FluidSurface
     system.setup_system();
     bordered_solver.release_factorization();
     candidate_solution = system.ghosted_vector();
+  }
+
+  StepFrame
+  SurfaceStep::frame_of(const StepRequest &request) const
+  {
+    const MeshRedistribution &redistribution = parts.redistribution;
+    const bool                reference      = request.law == MeshRedistribution::Law::reference;
+    StepFrame                 frame;
+    // The co-rotating flow steps are solved in the Tisserand frame of u^m, and the mesh turns with it.
+    if (flow_step_frame == FlowStepFrame::tisserand && request.velocity == StepRequest::Velocity::flow &&
+        request.global_constraints)
+      {
+        frame.kind    = StepFrame::Kind::co_rotating;
+        frame.motion  = RigidMotion::tisserand(geometry, system.dof_handler(), state.solution);
+        frame.carried = frame.motion;
+        return frame;
+      }
+    // The mesh moves along with the rigid motion R of the shape (fit of u^m·ν): law bgn relaxes towards X^m + τR,
+    // law reference carries the nodes by the rotation itself and solves the step in the frame they are carried in.
+    const bool follow = redistribution.follow_rigid_motion && (reference || redistribution.relaxation_time > 0);
+    // The momenta of u^m, once per step: the constant parts of the momentum constraints.
+    if (follow || (parts.momentum_constraints.active() && parts.flow.inertia))
+      frame.motion = rigid_motion(request, state.solution);
+    if (reference && redistribution.follow_rigid_motion)
+      frame.kind = StepFrame::Kind::carried;
+    if (follow)
+      frame.carried = frame.motion;
+    return frame;
   }
 
   RigidMotion
@@ -170,9 +196,8 @@ namespace FluidSurface
             step.start.transport,
             normal,
             state.reference_position,
-            step.carried,
+            step.frame,
             step.start.frame_velocity_on_new_surface,
-            step.co_rotating,
             area_rate,
             state.target_area / geometry.measure().area,
             step.membrane_weight};
@@ -204,15 +229,15 @@ namespace FluidSurface
     // the fraction τ/τ_c per step, like the area and volume drifts, so that a retry with a smaller τ asks for
     // a smaller change of u.
     const bool                  inertia     = parts.flow.inertia;
-    const std::array<double, 6> old_momenta = inertia ? step.motion.momenta : std::array<double, 6>{{0, 0, 0, 0, 0, 0}};
+    const std::array<double, 6> old_momenta = inertia ? step.frame.motion.momenta : std::array<double, 6>{{0, 0, 0, 0, 0, 0}};
     const double                fraction    = inertia ? std::min(1.0, step.tau / drift_time(step.tau)) : 1.0;
     for (unsigned int k = 0; k < 6; ++k)
       constraints.targets[k] = old_momenta[k] + fraction * (state.rigid_targets[k] - old_momenta[k]);
-    if (step.carried_frame)
+    if (step.frame.solved_in_frame())
       {
         // In the carried frame (Y = QỸ + c, u = Qũ): P̃ = QᵀP, L̃ = Qᵀ(L − c × P).
-        const Tensor<2, 3> Q = step.motion.rotation_over(step.tau);
-        const Tensor<1, 3> c = step.motion.carry(Point<3>(), step.tau);
+        const Tensor<2, 3> Q = step.frame.motion.rotation_over(step.tau);
+        const Tensor<1, 3> c = step.frame.motion.carry(Point<3>(), step.tau);
         Tensor<1, 3>       P, L;
         for (unsigned int d = 0; d < 3; ++d)
           {
@@ -343,9 +368,9 @@ namespace FluidSurface
       TimerSection section(step_timer, "diagnostics");
       result.dissipation_rate = dissipation_rate(candidate_solution); // of ũ on S^m, that of u on the carried surface
     }
-    if (step.carried_frame)
+    if (step.frame.solved_in_frame())
       {
-        system.carry_fields(step.motion, step.tau, x); // out of the carried frame: u = Qũ, Y = carry(Ỹ)
+        system.carry_fields(step.frame.motion, step.tau, x); // out of the carried frame: u = Qũ, Y = carry(Ỹ)
         candidate_solution = x;
       }
     system.copy_new_position_to_geometry(candidate_solution);
@@ -354,7 +379,7 @@ namespace FluidSurface
       {
         // The co-rotating step takes the modes of the new surface itself: its last evaluated surface is in the
         // frame, turned by τΩ against the lab.
-        const SurfaceGeometry::Curvature modes = step.co_rotating ? geometry.curvature() : step.evaluated_curvature;
+        const SurfaceGeometry::Curvature modes = step.frame.co_rotating() ? geometry.curvature() : step.evaluated_curvature;
         result.node_correction                 = conservation.project_area_and_volume(
           geometry, modes, state.target_area, state.target_volume, parts.volume_constraint.enabled);
         VectorType projected = system.owned_vector();
@@ -366,33 +391,21 @@ namespace FluidSurface
         candidate_solution = projected;
       }
     last_tau           = step.tau;
-    candidate_rotation = step.co_rotating ? step.motion.rotation_over(step.tau) : unit_symmetric_tensor<3>();
+    candidate_rotation = step.frame.mesh_rotation(step.tau);
     result.solved      = true;
   }
 
   SurfaceStep::Result
   SurfaceStep::advance(const StepRequest &request, const double tau)
   {
-    Result                        result;
-    const MeshRedistribution     &redistribution = parts.redistribution;
-    const bool                    flow_step      = request.velocity == StepRequest::Velocity::flow;
-    const bool                    reference      = request.law == MeshRedistribution::Law::reference;
-    // The momenta of u^m and the rigid motion of the shape, once per step (the mesh damping target and the
-    // constant parts of the momentum constraints).
-    const bool need_motion = (redistribution.follow_rigid_motion && (redistribution.relaxation_time > 0 || reference)) ||
-                             (parts.momentum_constraints.active() && parts.flow.inertia);
-    // The co-rotating flow steps are solved in the Tisserand frame of u^m; law reference solves the others in the
-    // frame carried by the rigid motion of the shape.
-    const bool co_rotating = time_scheme->co_rotating() && flow_step && request.global_constraints;
-    const RigidMotion motion = co_rotating ? RigidMotion::tisserand(geometry, system.dof_handler(), state.solution) :
-                               need_motion ? rigid_motion(request, state.solution) :
-                                             RigidMotion();
-    const bool carried_frame = co_rotating || (reference && redistribution.follow_rigid_motion);
+    Result                    result;
+    const MeshRedistribution &redistribution = parts.redistribution;
+    const bool                flow_step      = request.velocity == StepRequest::Velocity::flow;
+    const StepFrame           frame          = frame_of(request);
     // X^m: the accepted state's surface; the valve's solves move the geometry itself between them.
     TimeScheme &scheme = flow_step && request.global_constraints ? *time_scheme : backward_euler;
     std::optional<StepStart> start;
-    start.emplace(scheme.start(
-      flow_step ? state.position : geometry.position(), state.solution, system, motion, carried_frame, tau));
+    start.emplace(scheme.start(flow_step ? state.position : geometry.position(), state.solution, system, frame, tau));
     const SurfaceGeometry::Measures old_measures = geometry.measure();
     const SurfaceGeometry::Curvature old_curvature = geometry.curvature(); // of S^m (the geometry may be iterated)
     // The valve's relaxation solves (velocity at rest) always pull with full weight.
@@ -403,21 +416,14 @@ namespace FluidSurface
     // The stages of the step (one but for SDIRK2), each a backward-Euler solve in the frame of the step.
     for (unsigned int stage = 0;; ++stage)
       {
-        // The mesh moves along with the rigid motion R of the shape (fit of u^m·ν): law bgn relaxes towards
-        // X^m + τR, law reference carries the nodes by the rotation itself.
-        const bool carry =
-          co_rotating || (redistribution.follow_rigid_motion && (reference || redistribution.damping(start->tau) > 0));
         StepUnderWay step{request,
                           scheme.stage_time(stage, tau),
                           *start,
-                          motion,
-                          carry ? motion : RigidMotion(),
-                          carried_frame,
-                          co_rotating,
+                          frame,
                           old_measures,
                           old_curvature,
                           membrane_weight,
-                          StepAssembly(parts, request, co_rotating, system),
+                          StepAssembly(parts, request, system),
                           {},
                           old_curvature};
         // The first solve of an iterated BDF2 step on the extrapolated surface, of second order: one correction
@@ -432,7 +438,7 @@ namespace FluidSurface
           assemble(step, geometry.normal_field());
         }
         set_up_global_constraints(step, step.constraints);
-        set_constraint_values(predicted ? rigid_motion(request, state.solution).momenta : motion.momenta,
+        set_constraint_values(predicted ? rigid_motion(request, state.solution).momenta : frame.motion.momenta,
                               step.constraints);
         BorderedSystem::BlockVector solution = bordered_solver.initial_guess(
           BorderedSystem(system.matrix(), step.constraints.columns, step.constraints.rows),
@@ -448,7 +454,7 @@ namespace FluidSurface
             return result;
           }
         restore_old_geometry();
-        start.emplace(scheme.next_stage(stage + 1, solution.block(0), system, motion, carried_frame, tau));
+        start.emplace(scheme.next_stage(stage + 1, solution.block(0), system, frame, tau));
       }
   }
 

@@ -12,27 +12,19 @@ namespace FluidSurface
   using namespace dealii;
 
   std::unique_ptr<TimeScheme>
-  TimeScheme::create(const Kind kind, const Frame frame, const GeometryIteration::Predictor predictor)
+  TimeScheme::create(const std::string &name, const GeometryIteration::Predictor predictor)
   {
-    std::unique_ptr<TimeScheme> scheme;
-    if (kind == Kind::bdf2)
-      scheme = std::make_unique<VariableBDF2>(predictor);
-    else if (kind == Kind::sdirk2)
-      scheme = std::make_unique<SDIRK2>(predictor);
-    else
-      scheme = std::make_unique<BackwardEuler>();
-    if (frame == Frame::tisserand)
-      return std::make_unique<CoRotatingFrame>(std::move(scheme));
-    return scheme;
+    if (name == "BDF2")
+      return std::make_unique<VariableBDF2>(predictor);
+    if (name == "SDIRK2")
+      return std::make_unique<SDIRK2>(predictor);
+    if (name == "backward Euler")
+      return std::make_unique<BackwardEuler>();
+    throw std::logic_error("no time scheme named '" + name + "'");
   }
 
   StepStart
-  TimeScheme::next_stage(const unsigned int,
-                         const VectorType &,
-                         const StepSystem &,
-                         const RigidMotion &,
-                         const bool,
-                         const double)
+  TimeScheme::next_stage(const unsigned int, const VectorType &, const StepSystem &, const StepFrame &, const double)
   {
     throw std::logic_error("A time scheme of one stage has no next stage.");
   }
@@ -41,24 +33,22 @@ namespace FluidSurface
   BackwardEuler::start(const VectorType &old_position,
                        const VectorType &old_fields,
                        const StepSystem &,
-                       const RigidMotion &,
-                       const bool,
+                       const StepFrame &,
                        const double tau)
   {
     return {tau, old_position, old_fields, old_fields, false};
   }
 
   StepStart
-  VariableBDF2::start(const VectorType  &old_position,
-                      const VectorType  &old_fields,
-                      const StepSystem  &system,
-                      const RigidMotion &carried,
-                      const bool         carried_frame,
-                      const double       tau)
+  VariableBDF2::start(const VectorType &old_position,
+                      const VectorType &old_fields,
+                      const StepSystem &system,
+                      const StepFrame  &frame,
+                      const double      tau)
   {
     if (backward_euler_step())
-      return first_step.start(old_position, old_fields, system, carried, carried_frame, tau);
-    const VectorType previous = previous_in_frame(system, carried, carried_frame);
+      return first_step.start(old_position, old_fields, system, frame, tau);
+    const VectorType previous = previous_in_frame(system, frame);
     const double omega = tau / previous_step, alpha0 = (1 + 2 * omega) / (1 + omega);
     VectorType   start = system.owned_vector();
     start              = old_fields;
@@ -67,26 +57,25 @@ namespace FluidSurface
     StepStart        result = backward_euler_form(start, lagged, system, tau * (1 + omega) / (1 + 2 * omega));
     if (predictor != GeometryIteration::Predictor::old_surface)
       result.predicted = quadratic_predictor() && earlier_step > 0 ?
-                           &quadratic_prediction(old_fields, previous, lagged, system, carried, carried_frame, tau) :
+                           &quadratic_prediction(old_fields, previous, lagged, system, frame, tau) :
                            &lagged_fields;
     return result;
   }
 
   const VectorType &
-  VariableBDF2::quadratic_prediction(const VectorType  &old_fields,
-                                     const VectorType  &previous,
-                                     const VectorType  &linear,
-                                     const StepSystem  &system,
-                                     const RigidMotion &carried,
-                                     const bool         carried_frame,
-                                     const double       tau)
+  VariableBDF2::quadratic_prediction(const VectorType &old_fields,
+                                     const VectorType &previous,
+                                     const VectorType &linear,
+                                     const StepSystem &system,
+                                     const StepFrame  &frame,
+                                     const double      tau)
   {
     // Lagrange's weights of t^m, t^{m−1}, t^{m−2} at t^{m+1}.
     const double tp = previous_step, tpp = earlier_step;
     VectorType   earlier = system.owned_vector(), quadratic = system.owned_vector();
     earlier = earlier_solution;
-    if (carried_frame)
-      system.carry_fields(carried, tp + tpp, earlier);
+    if (frame.solved_in_frame())
+      system.carry_fields(frame.motion, tp + tpp, earlier);
     quadratic = old_fields;
     quadratic.sadd((tau + tp) * (tau + tp + tpp) / (tp * (tp + tpp)), -tau * (tau + tp + tpp) / (tp * tpp), previous);
     quadratic.add(tau * (tau + tp) / ((tp + tpp) * tpp), earlier);
@@ -107,14 +96,12 @@ namespace FluidSurface
   }
 
   VectorType
-  PreviousStateScheme::previous_in_frame(const StepSystem  &system,
-                                         const RigidMotion &carried,
-                                         const bool         carried_frame) const
+  PreviousStateScheme::previous_in_frame(const StepSystem &system, const StepFrame &frame) const
   {
     VectorType previous = system.owned_vector();
     previous            = previous_solution;
-    if (carried_frame)
-      system.carry_fields(carried, previous_step, previous);
+    if (frame.solved_in_frame())
+      system.carry_fields(frame.motion, previous_step, previous);
     return previous;
   }
 
@@ -218,22 +205,21 @@ namespace FluidSurface
   const double SDIRK2::gamma = 1 - 1 / std::sqrt(2.0);
 
   StepStart
-  SDIRK2::start(const VectorType  &old_position,
-                const VectorType  &old_fields,
-                const StepSystem  &system,
-                const RigidMotion &carried,
-                const bool         carried_frame,
-                const double       tau)
+  SDIRK2::start(const VectorType &old_position,
+                const VectorType &old_fields,
+                const StepSystem &system,
+                const StepFrame  &frame,
+                const double      tau)
   {
     stages = falling_back() ? 1 : 2;
     if (stages == 1)
-      return first_step.start(old_position, old_fields, system, carried, carried_frame, tau);
+      return first_step.start(old_position, old_fields, system, frame, tau);
     old_solution  = system.ghosted_vector();
     old_solution  = old_fields;
     lagged_fields = system.ghosted_vector();
     if (previous_step > 0)
       {
-        previous                = previous_in_frame(system, carried, carried_frame);
+        previous                = previous_in_frame(system, frame);
         const VectorType lagged = extrapolation(old_fields, previous, system, gamma * tau);
         lagged_fields           = lagged;
       }
@@ -249,8 +235,7 @@ namespace FluidSurface
   SDIRK2::next_stage(const unsigned int stage,
                      const VectorType  &stage_fields,
                      const StepSystem  &system,
-                     const RigidMotion &,
-                     const bool,
+                     const StepFrame &,
                      const double tau)
   {
     Assert(stage == 1 && stages == 2, ExcInternalError());

@@ -61,7 +61,7 @@ namespace FluidSurface
     energy_control = EnergyStepController(time.energy_tolerance());
     model.parse_parameters(prm, time.maximum_step_size());
     model.set_error_estimation(time.error_control());
-    model.set_time_scheme(time.scheme(), time.frame());
+    model.set_time_scheme(time);
     diagnostics.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
     steady_state.parse_parameters(prm);
@@ -108,13 +108,15 @@ namespace FluidSurface
       set_up_initial_state();
 
     const StopSignals stop_signals(communicator);
+    StepController    controller(model, time, pcout, output.directory(), communicator, &computing_timer);
+    controller.check_energy(energy_control);
     steps_this_run       = 0;
     last_checkpoint_step = resuming ? time.step_number() : numbers::invalid_unsigned_int;
     // A run that stops early still writes its summary, with the reason in its status line.
     try
       {
         while (time.before_end())
-          if (!attempt_step(stop_signals))
+          if (!attempt_step(controller, stop_signals))
             break; // the steady state
       }
     catch (const RunStopped &stop)
@@ -150,51 +152,14 @@ namespace FluidSurface
   }
 
   bool
-  FullModelScene::attempt_step(const StopSignals &stop_signals)
+  FullModelScene::attempt_step(StepController &controller, const StopSignals &stop_signals)
   {
-    const double                             tau  = time.step_size();
-    const SurfaceStep::Result step = model.advance(tau);
-    if (!step.solved)
-      {
-        retry_step(tau, step.failure, step.message, step.failure_details);
-        return true;
-      }
-    if (time.error_control() && step.error_estimate > time.error_bound())
-      {
-        std::ostringstream reason;
-        reason << "local error estimate " << std::setprecision(3) << step.error_estimate
-               << " above 'error tolerance' " << time.error_bound();
-        retry_step(tau, StepFailure::error_estimate, reason.str(), "", std::max(0.2, time.error_step_factor(step.error_estimate)));
-        return true;
-      }
-    const Energies                       candidate = candidate_energies();
-    const EnergyStepController::Decision energy =
-      energy_control.decide(total_energy, candidate.total, tau);
-    if (energy.verdict == EnergyStepController::Verdict::reject)
-      {
-        if (model.start_corrected_steps())
-          {
-            model.restore_last_state();
-            time.repeat_step();
-            energy_control.forget_rejection();
-            pcout << "    step rejected (" << energy.reason
-                  << "); retried at the same τ with the iterated geometry" << std::endl;
-          }
-        else if (model.fall_back_to_backward_euler(time.backward_euler_steps_after_rejection()))
-          {
-            model.restore_last_state();
-            time.repeat_step();
-            energy_control.forget_rejection();
-            pcout << "    step rejected (" << energy.reason << "); retried at the same τ as a backward-Euler step"
-                  << std::endl;
-          }
-        else
-          retry_step(tau, StepFailure::energy_rise, energy.reason, "");
-        return true;
-      }
-    accept_step(tau, step.error_estimate, candidate, energy);
+    const std::optional<StepController::AcceptedStep> step = controller.attempt(total_energy);
+    if (!step)
+      return true;
+    willmore                                    = step->willmore;
     const SurfaceReparametrization::Jumps jumps = reparametrize_if_due();
-    const Diagnostics::Values    values = record_step(tau, step, jumps);
+    const Diagnostics::Values    values = record_step(step->tau, step->result, jumps);
     check_mesh_quality();
     const bool steady = steady_state.reached(
       {time.time(), total_energy, {values.eigenvalues[0], values.eigenvalues[1], values.eigenvalues[2]}},
@@ -238,56 +203,6 @@ namespace FluidSurface
   {
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       append_to_error_log(output.directory(), text);
-  }
-
-  FullModelScene::Energies
-  FullModelScene::candidate_energies()
-  {
-    TimerOutput::Scope section(computing_timer, "curvature and energy");
-    Energies           candidate;
-    candidate.willmore = geometry.willmore_energy();
-    candidate.total    = model.total_energy(model.kinetic_energy(model.candidate_solution()), candidate.willmore);
-    return candidate;
-  }
-
-  void
-  FullModelScene::retry_step(const double       tau,
-                             const StepFailure  failure,
-                             const std::string &reason,
-                             const std::string &solver_report,
-                             const double       factor)
-  {
-    model.restore_last_state();
-    if (!solver_report.empty())
-      {
-        std::ostringstream entry;
-        entry << "step " << time.step_number() + 1 << " at t = " << time.time() << " with τ = " << tau << ": "
-              << reason << '\n'
-              << solver_report;
-        log_error(entry.str());
-      }
-    const std::string advice = FluidSurface::advice(failure, output.directory() + "error.log");
-    time.reject(reason,
-                advice + "the output up to the last accepted step, the summary and the last checkpoint are intact",
-                factor);
-  }
-
-  void
-  FullModelScene::accept_step(const double                          tau,
-                              const double                          error_estimate,
-                              const Energies                       &candidate,
-                              const EnergyStepController::Decision &energy)
-  {
-    if (energy.verdict == EnergyStepController::Verdict::accept_with_warning)
-      pcout << "    warning: energy rose by " << std::setprecision(3) << energy.rise << " at t = " << time.time()
-            << " at a rate that does not fall with τ (space discretization); step accepted" << std::endl;
-    if (energy.step_size)
-      time.set_step_size(*energy.step_size);
-    if (model.accept(time.time() + tau))
-      pcout << "    mesh law anchored at t = " << time.time() + tau
-            << ": the membrane energy now pulls towards this surface, with full weight" << std::endl;
-    time.accept(tau, error_estimate);
-    willmore = candidate.willmore;
   }
 
   void

@@ -7,6 +7,7 @@
 #include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/io/run_stopped.h>
 #include <fluid_surface/scenes/stability_scene.h>
+#include <fluid_surface/scenes/step_controller.h>
 #include <fluid_surface/time_stepping/time_stepper.h>
 
 #include <algorithm>
@@ -160,9 +161,8 @@ namespace FluidSurface
     TimeStepper time;
     time.parse_parameters(prm);
     tau  = time.step_size();
-    bdf2 = time.scheme() == TimeScheme::Kind::bdf2;
     model.parse_parameters(prm, time.maximum_step_size());
-    model.set_time_scheme(time.scheme(), time.frame());
+    model.set_time_scheme(time);
     if (!from_checkpoint && geometry.equilibrium_shape() == nullptr)
       throw_invalid_entry("geometry/shape",
                           SurfaceGeometry::shape_name(geometry.parameters().shape),
@@ -224,28 +224,26 @@ namespace FluidSurface
   StabilityScene::advanced(const SurfaceState &start, const unsigned int steps, const std::string &what)
   {
     model.restart_from(start);
-    // BDF2 starts with a backward-Euler step, whose damping of the fields turning through the nodes (at mω) would
-    // bias σ by ln|1 − imωτ|/T; the ramp τ/8, τ/8, τ/4, τ/2 (step ratios ≤ 2, within BDF2's zero-stability) makes
-    // that first step short.
+    // The scheme's start-up in place of the first step (TimeScheme::start_up()), then steps of τ, none retried.
     std::vector<double> sizes;
-    if (bdf2 && steps > 0)
-      sizes = {tau / 8, tau / 8, tau / 4, tau / 2};
-    while (sizes.size() < steps + (sizes.empty() ? 0 : 3))
-      sizes.push_back(tau);
-    double time = 0;
-    for (unsigned int n = 0; n < sizes.size(); ++n)
+    if (steps > 0)
       {
-        const SurfaceStep::Result step = model.advance(sizes[n]);
-        if (!step.solved)
-          {
-            std::ostringstream reason;
-            reason << "step " << n + 1 << " of the time map of " << what << " was not solved (" << step.message << ")";
-            throw RunFailed(reason.str(),
-                            "the rows of spectrum.csv so far are intact; try a smaller 'time stepping/time step' or "
-                            "'stability/perturbation size'");
-          }
-        time += sizes[n];
-        model.accept(time);
+        sizes = model.time_scheme().start_up(tau).steps;
+        sizes.insert(sizes.end(), steps - 1, tau);
+      }
+    TimeStepper map_steps;
+    map_steps.prescribe_steps(sizes);
+    StepController controller(model, map_steps, pcout, output.directory(), communicator);
+    try
+      {
+        while (map_steps.before_end())
+          controller.attempt(0);
+      }
+    catch (const RunFailed &failure)
+      {
+        throw RunFailed("the time map of " + what + ": " + failure.reason(),
+                        "the rows of spectrum.csv so far are intact; try a smaller 'time stepping/time step' or "
+                        "'stability/perturbation size'");
       }
     return model.accepted_state();
   }
@@ -632,8 +630,9 @@ namespace FluidSurface
   void
   StabilityScene::measure_unperturbed_map()
   {
+    const std::string start_up = model.time_scheme().start_up(tau).description;
     pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ; the time-" << map_time
-          << " map is " << n_steps << " steps of τ = " << tau << (bdf2 ? " (the first in four, τ/8 to τ/2)" : "")
+          << " map is " << n_steps << " steps of τ = " << tau << (start_up.empty() ? "" : " (" + start_up + ")")
           << std::endl;
 
     model.restart_from(base);

@@ -131,23 +131,18 @@ namespace FluidSurface
     relaxation_end_time       = prm.get_double("relaxation end time");
     relaxation_tau_max        = prm.get_double("relaxation maximum time step");
     growth                    = prm.get_double("growth factor");
+    growth_entry              = prm.get("growth factor");
     shrink                    = prm.get_double("shrink factor");
     easy_steps                = prm.get_integer("easy steps before growth");
     relative_energy_tolerance = prm.get_double("energy tolerance");
     error_tolerance           = prm.get_double("error tolerance");
-    scheme_kind = prm.get("scheme") == "BDF2"   ? TimeScheme::Kind::bdf2 :
-                  prm.get("scheme") == "SDIRK2" ? TimeScheme::Kind::sdirk2 :
-                                                  TimeScheme::Kind::backward_euler;
-    frame_kind  = prm.get("frame") == "Tisserand" ? TimeScheme::Frame::tisserand : TimeScheme::Frame::lab;
+    scheme_name = prm.get("scheme");
+    frame_kind  = prm.get("frame") == "Tisserand" ? FlowStepFrame::tisserand : FlowStepFrame::lab;
     fallback_steps = prm.get_integer("backward Euler steps after rejection");
     if (error_tolerance > 0 && !adaptive)
       throw_invalid_entry("time stepping/error tolerance",
                           prm.get("error tolerance"),
                           "0 with adaptive = false (a fixed step has nothing to adapt)");
-    if (scheme_kind == TimeScheme::Kind::bdf2 && growth > 2)
-      throw_invalid_entry("time stepping/growth factor",
-                          prm.get("growth factor"),
-                          "a factor ≤ 2 with scheme = BDF2 (variable-step BDF2 is zero-stable for τ/τ_p < 1 + √2)");
     if (end_time > 0 && end_time < tau_min)
       throw_invalid_entry("time stepping/end time",
                           prm.get("end time"),
@@ -175,6 +170,16 @@ namespace FluidSurface
       tau = std::min(tau, largest_step());
   }
 
+  void
+  TimeStepper::limit_step_ratio(const double largest_ratio, const std::string &reason) const
+  {
+    if (growth <= largest_ratio)
+      return;
+    std::ostringstream expected;
+    expected << "a factor ≤ " << largest_ratio << " with scheme = " << scheme_name << " (" << reason << ")";
+    throw_invalid_entry("time stepping/growth factor", growth_entry, expected.str());
+  }
+
   TimeStepper::ConstantSteps
   TimeStepper::parse_constant_steps(ParameterHandler &prm, const bool must_step, const std::string &problem)
   {
@@ -198,9 +203,23 @@ namespace FluidSurface
     return steps;
   }
 
+  void
+  TimeStepper::prescribe_steps(const std::vector<double> &sizes)
+  {
+    prescribed_steps = sizes;
+    adaptive         = false;
+    current_time     = 0;
+    end_time         = 0;
+    for (const double size : sizes)
+      end_time += size;
+    n_accepted = n_rejected = n_easy = 0;
+  }
+
   double
   TimeStepper::step_size() const
   {
+    if (!prescribed_steps.empty())
+      return prescribed_steps[n_accepted];
     const double remaining = end_time - current_time;
     // Avoid a sliver of a last step.
     return (remaining < 1.5 * tau) ? (remaining > tau ? 0.5 * remaining : remaining) : tau;

@@ -187,11 +187,18 @@ namespace FluidSurface
     {
       return kinetic_energy(state.solution);
     }
-    /// The result of the last advance(), before accept().
-    const VectorType &
-    candidate_solution() const
+    /// ½∫|κ|² and F of a state.
+    struct Energies
     {
-      return step.candidate();
+      double willmore = 0;
+      double total    = 0;
+    };
+    /// The energies of the result of the last advance(), before accept(), on its surface.
+    Energies
+    candidate_energies() const
+    {
+      const double willmore = geometry.willmore_energy();
+      return {willmore, total_energy(kinetic_energy(step.candidate()), willmore)};
     }
     /// The parsed components of the step (flow, bending, mesh law, constraints, geometry iteration).
     const StepComponents &
@@ -206,12 +213,18 @@ namespace FluidSurface
       step.set_error_estimation(on);
     }
     /**
-     * The time scheme of the flow steps (`time stepping/scheme`, SurfaceStep::set_time_scheme()); BDF2 is an
-     * input error unless every flow step iterates its geometry to the new time level (a lagged geometry is
-     * first order).
+     * The time scheme and frame of the flow steps (`time stepping/scheme`, `frame` of @p time), checked against
+     * its rules: an input error if @p time grows τ faster than the scheme's step ratio allows, or if the
+     * scheme needs the geometry of its new time level and the flow steps do not iterate their geometry to it.
      */
     void
-    set_time_scheme(const TimeScheme::Kind kind, const TimeScheme::Frame frame);
+    set_time_scheme(const TimeStepper &time);
+    /// The time scheme of the flow steps and its rules.
+    const TimeScheme &
+    time_scheme() const
+    {
+      return step.time_scheme_of_flow_steps();
+    }
 
     /// The DoFs of (u, p, κ, y, Y).
     const dealii::DoFHandler<2, 3> &

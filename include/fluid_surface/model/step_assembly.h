@@ -2,8 +2,8 @@
 #ifndef fluid_surface_model_step_assembly_h
 #define fluid_surface_model_step_assembly_h
 
-#include <fluid_surface/model/rigid_motion.h>
 #include <fluid_surface/model/step_components.h>
+#include <fluid_surface/model/step_frame.h>
 #include <fluid_surface/model/step_request.h>
 #include <fluid_surface/model/step_system.h>
 
@@ -26,15 +26,15 @@ namespace FluidSurface
     const VectorType  &transport_fields;   ///< the fields whose u the convection lags (u^m, or BDF2's u*)
     const VectorType  &normal;             ///< ñ of the assembly (the geometry's, or a GeometryIteration iterate's)
     const VectorType  &reference_position; ///< S₀ of law reference in the flow numbering
-    const RigidMotion &carried;            ///< the rigid motion the mesh follows (none: RigidMotion())
+    /**
+     * The frame of the step; its `carried` motion R is the one the mesh follows. Co-rotating: the convection is
+     * transported by u − R and the mesh moves relative to the frame, ∇_{u* − R} ũ − (1/τ)(G(Ỹ − X̂), v), instead
+     * of ∇_{u*} ũ − (1/τ)(G(Ỹ − X̂ + τR), v): the two differ by ∇_R(ũ − u*), of order τ mΩ ∂_t u, which a frame
+     * that turns at Ω must not carry.
+     */
+    const StepFrame &frame;
     /// Law reference: the frame velocity R taken on the assembly's surface (BDF2: the new level) instead of X̂.
     bool frame_velocity_on_new_surface;
-    /**
-     * The co-rotating step: the convection is transported by u − R and the mesh moves relative to the frame,
-     * ∇_{u* − R} ũ − (1/τ)(G(Ỹ − X̂), v), instead of ∇_{u*} ũ − (1/τ)(G(Ỹ − X̂ + τR), v): the two differ by
-     * ∇_R(ũ − u*), of order τ mΩ ∂_t u, which a frame that turns at Ω must not carry.
-     */
-    bool relative_transport;
     double area_rate;       ///< s = −(A^m − A₀)/(τ_c A^m) of the continuity row
     double area_scale;      ///< A₀/A of the membrane energy
     double membrane_weight; ///< the weight of the membrane energy (MeshRedistribution::membrane_weight())
@@ -74,12 +74,8 @@ namespace FluidSurface
   class StepAssembly
   {
   public:
-    /// The terms of @p request with the parsed @p components, into @p system; @p co_rotating: the step is solved
-    /// in the Tisserand frame (TimeScheme::co_rotating()).
-    StepAssembly(const StepComponents &components,
-                 const StepRequest    &request,
-                 const bool            co_rotating,
-                 StepSystem           &system);
+    /// The terms of @p request with the parsed @p components, into @p system.
+    StepAssembly(const StepComponents &components, const StepRequest &request, StepSystem &system);
     ~StepAssembly();
 
     /// Assembles matrix, right-hand side and global columns on the geometry's current surface.

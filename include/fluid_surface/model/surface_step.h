@@ -14,10 +14,12 @@
 #include <fluid_surface/model/rigid_motion.h>
 #include <fluid_surface/model/step_components.h>
 #include <fluid_surface/model/step_failure.h>
+#include <fluid_surface/model/step_frame.h>
 #include <fluid_surface/model/step_request.h>
 #include <fluid_surface/model/step_system.h>
 #include <fluid_surface/model/surface_state.h>
 #include <fluid_surface/model/time_scheme.h>
+#include <fluid_surface/time_stepping/time_stepper.h>
 
 #include <array>
 #include <memory>
@@ -149,9 +151,16 @@ namespace FluidSurface
     {
       error_estimate.set_enabled(on);
     }
-    /// The time scheme of the flow steps (`time stepping/scheme`; its history is kept in checkpoints).
+    /// The time scheme named @p name of the flow steps (`time stepping/scheme`; its history is kept in
+    /// checkpoints), solved in the frame @p frame (`time stepping/frame`).
     void
-    set_time_scheme(const TimeScheme::Kind kind, const TimeScheme::Frame frame);
+    set_time_scheme(const std::string &name, const FlowStepFrame frame);
+    /// The time scheme of the flow steps: its rules (TimeScheme::name(), step_ratio_limit(), start_up(), …).
+    const TimeScheme &
+    time_scheme_of_flow_steps() const
+    {
+      return *time_scheme;
+    }
     /// Whether the next flow step iterates its geometry.
     bool
     iterating_geometry() const
@@ -209,6 +218,9 @@ namespace FluidSurface
     /// What the steps of one advance() share: the request, its start, the assembly and the constraints.
     struct StepUnderWay;
 
+    /// The frame a step as @p request asks is solved in, from the accepted state (once per step).
+    StepFrame
+    frame_of(const StepRequest &request) const;
     /// The rigid motion of the shape of @p flow_vector (RigidMotion::fit() with the mesh law's cutoff).
     RigidMotion
     rigid_motion(const StepRequest &request, const VectorType &flow_vector) const;
@@ -258,6 +270,8 @@ namespace FluidSurface
     BorderedSolver      bordered_solver;
     /// The scheme of the flow steps and backward Euler for the rest (the valve's solves).
     std::unique_ptr<TimeScheme> time_scheme;
+    /// The frame of the flow steps (`time stepping/frame`).
+    FlowStepFrame               flow_step_frame = FlowStepFrame::lab;
     BackwardEuler               backward_euler;
     LocalErrorEstimate          error_estimate;
     CorrectedSteps              corrected_steps;

@@ -4,14 +4,16 @@
 
 #include <fluid_surface/geometry/surface_geometry.h>
 #include <fluid_surface/model/geometry_iteration.h>
+#include <fluid_surface/model/step_frame.h>
 
+#include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace FluidSurface
 {
   class CheckpointData;
-  class RigidMotion;
   class StepSystem;
 
   /**
@@ -34,55 +36,64 @@ namespace FluidSurface
 
   /**
    * A time scheme of the flow steps of scene full (`time stepping/scheme`): how a step of size τ from the
-   * accepted state is written in backward-Euler form (start()), and the history it keeps across accepted steps,
-   * in checkpoints too.
+   * accepted state is written in backward-Euler form (start()), the history it keeps across accepted steps, in
+   * checkpoints too, and its rules: its name, the largest step ratio, whether it needs the geometry of its new
+   * time level, its start-up. A new scheme is one more class and one more line in create().
    */
   class TimeScheme
   {
   public:
-    /// The schemes of `time stepping/scheme`.
-    enum class Kind
+    /// The largest ratio τ/τ_p of two successive steps a scheme allows, and why.
+    struct StepRatioLimit
     {
-      backward_euler,
-      bdf2,
-      sdirk2
+      double      ratio = std::numeric_limits<double>::infinity(); ///< ∞: any
+      std::string reason;
     };
-    /// The frames of `time stepping/frame`.
-    enum class Frame
+    /// The steps that replace the first step of size τ of a time map (scene stability), and their description.
+    struct StartUp
     {
-      lab,      ///< the step is solved in the lab frame (law reference: in the frame of the shape's rigid motion)
-      tisserand ///< in the frame that turns with the fluid's rigid motion Ω = I⁻¹L (CoRotatingFrame)
+      std::vector<double> steps;
+      std::string         description; ///< empty: the first step itself
     };
-    /// The scheme @p kind in the frame @p frame; BDF2 predicts the new position by @p predictor.
-    static std::unique_ptr<TimeScheme>
-    create(const Kind                            kind,
-           const Frame                           frame     = Frame::lab,
-           const GeometryIteration::Predictor predictor = GeometryIteration::Predictor::linear);
 
-    /**
-     * Whether the flow steps are solved in the Tisserand frame of u^m (RigidMotion::tisserand()): the frame
-     * turns with the fluid's rigid motion over the step (exactly, by Rodrigues' formula), the momentum balance
-     * gains the frame term (Ω × ũ, v), and the mesh is carried with the frame.
-     */
-    virtual bool
-    co_rotating() const
-    {
-      return false;
-    }
+    /// The scheme named @p name (`time stepping/scheme`: backward Euler, BDF2, SDIRK2), whose predicted
+    /// geometry is by @p predictor.
+    static std::unique_ptr<TimeScheme>
+    create(const std::string &name, const GeometryIteration::Predictor predictor = GeometryIteration::Predictor::linear);
 
     virtual ~TimeScheme() = default;
+    /// Its name in `time stepping/scheme`.
+    virtual std::string
+    name() const = 0;
+    /// The largest step ratio τ/τ_p of its zero-stability (the step controllers must not grow τ faster).
+    virtual StepRatioLimit
+    step_ratio_limit() const
+    {
+      return {};
+    }
+    /// Whether each of its steps needs the geometry of the new time level (a lagged geometry is first order):
+    /// `geometry iteration/maximum iterations` ≥ 1 with apply = always and time level = 1.
+    virtual bool
+    needs_new_level_geometry() const
+    {
+      return true;
+    }
+    /// The steps a time map from a state without history starts with, in place of its first step of size @p tau.
+    virtual StartUp
+    start_up(const double tau) const
+    {
+      return {{tau}, ""};
+    }
     /**
      * The start of a step of size @p tau from X^m = @p old_position and x^m = @p old_fields, i.e. of its first
-     * stage. Law reference (@p carried_frame): the step is solved in the frame carried by the rigid motion
-     * @p carried.
+     * stage, in the frame @p frame of the step: the history is carried into it when the step is solved there.
      */
     virtual StepStart
-    start(const VectorType  &old_position,
-          const VectorType  &old_fields,
-          const StepSystem  &system,
-          const RigidMotion &carried,
-          const bool         carried_frame,
-          const double       tau) = 0;
+    start(const VectorType &old_position,
+          const VectorType &old_fields,
+          const StepSystem &system,
+          const StepFrame  &frame,
+          const double      tau) = 0;
     /// The number of solves (stages) of the step that start() began, each written in backward-Euler form.
     virtual unsigned int
     n_stages() const
@@ -104,8 +115,7 @@ namespace FluidSurface
     next_stage(const unsigned int stage,
                const VectorType  &stage_fields,
                const StepSystem  &system,
-               const RigidMotion &carried,
-               const bool         carried_frame,
+               const StepFrame   &frame,
                const double       tau);
     /// The step of size @p tau from the accepted fields @p old_fields was accepted (called before they move on).
     virtual void
@@ -136,92 +146,22 @@ namespace FluidSurface
   class BackwardEuler : public TimeScheme
   {
   public:
-    StepStart
-    start(const VectorType  &old_position,
-          const VectorType  &old_fields,
-          const StepSystem  &system,
-          const RigidMotion &carried,
-          const bool         carried_frame,
-          const double       tau) override;
-  };
-
-  /**
-   * A scheme solved in the Tisserand frame of the fluid (co_rotating()): a mode that turns with the fluid at
-   * the co-rotating frequency ν is seen by the step at ν, not at its lab frequency ν + mΩ, so the step's
-   * damping of it does not grow with Ωτ (doc/scheme.md, "The co-rotating step"). The start and the history
-   * are those of the scheme it wraps (BackwardEuler, VariableBDF2), whose previous state is carried into the
-   * frame of the step.
-   */
-  class CoRotatingFrame : public TimeScheme
-  {
-  public:
-    /// The scheme @p scheme in the Tisserand frame.
-    explicit CoRotatingFrame(std::unique_ptr<TimeScheme> scheme)
-      : scheme(std::move(scheme))
-    {}
-    bool
-    co_rotating() const override
+    std::string
+    name() const override
     {
-      return true;
-    }
-    StepStart
-    start(const VectorType  &old_position,
-          const VectorType  &old_fields,
-          const StepSystem  &system,
-          const RigidMotion &carried,
-          const bool         carried_frame,
-          const double       tau) override
-    {
-      return scheme->start(old_position, old_fields, system, carried, carried_frame, tau);
-    }
-    unsigned int
-    n_stages() const override
-    {
-      return scheme->n_stages();
-    }
-    double
-    stage_time(const unsigned int stage, const double tau) const override
-    {
-      return scheme->stage_time(stage, tau);
-    }
-    StepStart
-    next_stage(const unsigned int stage,
-               const VectorType  &stage_fields,
-               const StepSystem  &system,
-               const RigidMotion &carried,
-               const bool         carried_frame,
-               const double       tau) override
-    {
-      return scheme->next_stage(stage, stage_fields, system, carried, carried_frame, tau);
-    }
-    void
-    accept(const VectorType &old_fields, const StepSystem &system, const double tau) override
-    {
-      scheme->accept(old_fields, system, tau);
-    }
-    void
-    forget_history() override
-    {
-      scheme->forget_history();
+      return "backward Euler";
     }
     bool
-    fall_back_to_backward_euler(const unsigned int steps) override
+    needs_new_level_geometry() const override
     {
-      return scheme->fall_back_to_backward_euler(steps);
+      return false;
     }
-    void
-    save(CheckpointData &data, const StepSystem &system) const override
-    {
-      scheme->save(data, system);
-    }
-    void
-    load(const CheckpointData &data, const StepSystem &system) override
-    {
-      scheme->load(data, system);
-    }
-
-  private:
-    std::unique_ptr<TimeScheme> scheme;
+    StepStart
+    start(const VectorType &old_position,
+          const VectorType &old_fields,
+          const StepSystem &system,
+          const StepFrame  &frame,
+          const double      tau) override;
   };
 
   /**
@@ -266,10 +206,10 @@ namespace FluidSurface
     {
       return backward_euler_steps > 0;
     }
-    /// x̃^{m−1}: the previous state in the frame of the step (law reference: frame coordinates at t^m − τ_p,
+    /// x̃^{m−1}: the previous state in the frame of the step (solved in a frame: frame coordinates at t^m − τ_p,
     /// i.e. carried forward by τ_p; otherwise the previous state itself). Owned.
     VectorType
-    previous_in_frame(const StepSystem &system, const RigidMotion &carried, const bool carried_frame) const;
+    previous_in_frame(const StepSystem &system, const StepFrame &frame) const;
     /// The linear extrapolation x^m + (θ/τ_p)(x^m − x̃^{m−1}) of @p old_fields and @p previous to t^m + θ. Owned.
     VectorType
     extrapolation(const VectorType &old_fields, const VectorType &previous, const StepSystem &system, const double theta) const;
@@ -308,13 +248,32 @@ namespace FluidSurface
       : predictor(predictor)
     {}
 
+    std::string
+    name() const override
+    {
+      return "BDF2";
+    }
+    StepRatioLimit
+    step_ratio_limit() const override
+    {
+      return {2, "variable-step BDF2 is zero-stable for τ/τ_p < 1 + √2"};
+    }
+    /**
+     * BDF2 starts with a backward-Euler step, whose damping of the fields turning through the nodes (at mω) would
+     * bias a time map's growth rate by ln|1 − imωτ|/T; the ramp τ/8, τ/8, τ/4, τ/2 (step ratios ≤ 2, within
+     * BDF2's zero-stability) makes that first step short.
+     */
+    StartUp
+    start_up(const double tau) const override
+    {
+      return {{tau / 8, tau / 8, tau / 4, tau / 2}, "the first in four, τ/8 to τ/2"};
+    }
     StepStart
-    start(const VectorType  &old_position,
-          const VectorType  &old_fields,
-          const StepSystem  &system,
-          const RigidMotion &carried,
-          const bool         carried_frame,
-          const double       tau) override;
+    start(const VectorType &old_position,
+          const VectorType &old_fields,
+          const StepSystem &system,
+          const StepFrame  &frame,
+          const double      tau) override;
     void
     accept(const VectorType &old_fields, const StepSystem &system, const double tau) override;
     void
@@ -339,13 +298,12 @@ namespace FluidSurface
     /// The quadratic predictor (of kind predictor) through x^m = @p old_fields, x^{m−1}, x^{m−2}, the latter
     /// carried into the frame of the step; @p linear is the linear one.
     const VectorType &
-    quadratic_prediction(const VectorType  &old_fields,
-                         const VectorType  &previous,
-                         const VectorType  &linear,
-                         const StepSystem  &system,
-                         const RigidMotion &carried,
-                         const bool         carried_frame,
-                         const double       tau);
+    quadratic_prediction(const VectorType &old_fields,
+                         const VectorType &previous,
+                         const VectorType &linear,
+                         const StepSystem &system,
+                         const StepFrame  &frame,
+                         const double      tau);
 
     GeometryIteration::Predictor predictor;
     /// x^{m−2} and the step τ_pp that followed it (quadratic predictors only); τ_pp = 0: none.
@@ -371,13 +329,17 @@ namespace FluidSurface
       : predictor(predictor)
     {}
 
+    std::string
+    name() const override
+    {
+      return "SDIRK2";
+    }
     StepStart
-    start(const VectorType  &old_position,
-          const VectorType  &old_fields,
-          const StepSystem  &system,
-          const RigidMotion &carried,
-          const bool         carried_frame,
-          const double       tau) override;
+    start(const VectorType &old_position,
+          const VectorType &old_fields,
+          const StepSystem &system,
+          const StepFrame  &frame,
+          const double      tau) override;
     unsigned int
     n_stages() const override
     {
@@ -392,8 +354,7 @@ namespace FluidSurface
     next_stage(const unsigned int stage,
                const VectorType  &stage_fields,
                const StepSystem  &system,
-               const RigidMotion &carried,
-               const bool         carried_frame,
+               const StepFrame   &frame,
                const double       tau) override;
 
     /// γ = 1 − 1/√2.

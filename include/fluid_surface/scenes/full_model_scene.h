@@ -9,6 +9,7 @@
 #include <fluid_surface/model/fluid_deformable_surface.h>
 #include <fluid_surface/postprocess/diagnostics.h>
 #include <fluid_surface/scenes/scene.h>
+#include <fluid_surface/scenes/step_controller.h>
 #include <fluid_surface/time_stepping/energy_step_controller.h>
 #include <fluid_surface/time_stepping/steady_state.h>
 #include <fluid_surface/time_stepping/time_stepper.h>
@@ -57,48 +58,19 @@ namespace FluidSurface
     run() override;
 
   private:
-    /// ½∫H² and the total energy F of a state.
-    struct Energies
-    {
-      double willmore = 0;
-      double total    = 0;
-    };
-
     /// Sets up the model at t = 0 and records and writes the initial state.
     void
     set_up_initial_state();
     /// Restores every component from the checkpoint and checks that it reproduces its total energy.
     void
     resume_from_checkpoint();
-    /// The energies of the solved step that is not yet accepted (the curvature of its surface is computed here).
-    Energies
-    candidate_energies();
     /**
-     * One attempt of a time step: solve, check the error estimate and the energy, accept, re-parametrize if due,
-     * record, write; a failed or rejected attempt is retried with a smaller τ by the next call. Returns false when
-     * the run has reached its steady state.
+     * One attempt of a time step by @p controller (solve, check the error estimate and the energy, accept or
+     * set up the retry); an accepted step is followed by the safety valve if due, the record and the files.
+     * Returns false when the run has reached its steady state.
      */
     bool
-    attempt_step(const StopSignals &stop_signals);
-    /**
-     * Undoes the last step (of size @p tau, not solved or rejected: @p failure, in one line @p reason; its
-     * advice comes from advice()) and shrinks τ for its retry; RunFailed when τ would fall below τ_min. A non-empty @p solver_report (the linear solver's own
-     * account of a failure) goes to error.log. @p factor > 0: shrink τ by it (the error control's) when it is
-     * smaller than the shrink factor.
-     */
-    void
-    retry_step(const double       tau,
-               const StepFailure  failure,
-               const std::string &reason,
-               const std::string &solver_report,
-               const double       factor = 0);
-    /// Makes the solved step of size @p tau the current state; τ for the next step as the @p energy check says,
-    /// or, with error control, as its @p error_estimate says.
-    void
-    accept_step(const double                          tau,
-                const double                          error_estimate,
-                const Energies                       &candidate,
-                const EnergyStepController::Decision &energy);
+    attempt_step(StepController &controller, const StopSignals &stop_signals);
     /**
      * One statistics row and screen report of the accepted state (with the @p jumps of the re-parametrization
      * of this step, zero if none); returns its measures.

@@ -154,7 +154,6 @@ namespace FluidSurface
     unsigned int              n_steps  = 0;          ///< T/τ
     unsigned int              n_settling_steps = 0;  ///< t_s/τ
     double                    tau      = 0;          ///< τ
-    bool                      bdf2     = false;      ///< `time stepping/scheme = BDF2`
     unsigned int              max_krylov = 0;        ///< largest Krylov dimension
     unsigned int              max_restarts = 0;      ///< thick restarts per (m, parity) at most
     unsigned int              n_reported = 0;        ///< eigenvalue pairs reported per (m, parity)

@@ -4,14 +4,20 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <fluid_surface/model/time_scheme.h>
-
 #include <algorithm>
 #include <string>
+#include <vector>
 
 namespace FluidSurface
 {
   class CheckpointData;
+
+  /// The frames of `time stepping/frame` the flow steps are solved in (StepFrame).
+  enum class FlowStepFrame
+  {
+    lab,      ///< the lab frame (law reference: the frame of the shape's rigid motion)
+    tisserand ///< the frame that turns with the fluid's rigid motion Ω = I⁻¹L
+  };
 
   /**
    * Time and step size τ of a run (`subsection time stepping`): a rejected
@@ -71,7 +77,7 @@ namespace FluidSurface
     bool
     before_end() const
     {
-      return current_time < end_time * (1 - 1e-12);
+      return prescribed_steps.empty() ? current_time < end_time * (1 - 1e-12) : n_accepted < prescribed_steps.size();
     }
     /// The end time T.
     double
@@ -107,18 +113,30 @@ namespace FluidSurface
     {
       return error_tolerance > 0;
     }
-    /// The time scheme of the flow steps (`scheme`).
-    TimeScheme::Kind
+    /**
+     * From t = 0, the steps @p sizes and no others (a time map of scene stability): step_size() is the next of
+     * them, and a rejected step ends the run (RunFailed), as with `adaptive = false`.
+     */
+    void
+    prescribe_steps(const std::vector<double> &sizes);
+    /// The name of the time scheme of the flow steps (`scheme`; TimeScheme::create()).
+    const std::string &
     scheme() const
     {
-      return scheme_kind;
+      return scheme_name;
     }
     /// The frame of the flow steps (`frame`).
-    TimeScheme::Frame
+    FlowStepFrame
     frame() const
     {
       return frame_kind;
     }
+    /**
+     * The scheme's zero-stability bounds the ratio of successive steps by @p largest_ratio (for @p reason):
+     * an input error if `growth factor` exceeds it.
+     */
+    void
+    limit_step_ratio(const double largest_ratio, const std::string &reason) const;
     /// K of `backward Euler steps after rejection` (BDF2 only; 0: off).
     unsigned int
     backward_euler_steps_after_rejection() const
@@ -205,14 +223,16 @@ namespace FluidSurface
     double       relaxation_end_time = 0; ///< t_r of `relaxation end time`
     double       relaxation_tau_max  = 0; ///< τ_r of `relaxation maximum time step`
     double       growth;
+    std::string  growth_entry = "2"; ///< `growth factor` as the file writes it (for the message of limit_step_ratio())
     double       shrink;
     unsigned int easy_steps;
     double       relative_energy_tolerance;
     double       error_tolerance = 0; ///< ε_t; 0: no error control
     unsigned int fallback_steps  = 0; ///< K of `backward Euler steps after rejection`
-    TimeScheme::Kind  scheme_kind = TimeScheme::Kind::backward_euler; ///< `scheme`
-    TimeScheme::Frame frame_kind  = TimeScheme::Frame::lab;           ///< `frame`
+    std::string   scheme_name = "backward Euler";   ///< `scheme`
+    FlowStepFrame frame_kind  = FlowStepFrame::lab; ///< `frame`
     bool         adaptive;
+    std::vector<double> prescribed_steps; ///< prescribe_steps(); empty: the steps follow from the entries
 
     double       current_time = 0;
     unsigned int n_accepted   = 0;

@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/mpi.h>
+
+#include <fluid_surface/io/run_stopped.h>
+#include <fluid_surface/scenes/step_controller.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace FluidSurface
+{
+  using namespace dealii;
+
+  StepController::StepController(FluidDeformableSurface   &model,
+                                 TimeStepper              &time,
+                                 const ConditionalOStream &pcout,
+                                 const std::string        &output_directory,
+                                 const MPI_Comm            communicator,
+                                 TimerOutput              *timer)
+    : model(model)
+    , time(time)
+    , pcout(pcout)
+    , output_directory(output_directory)
+    , communicator(communicator)
+    , timer(timer)
+  {}
+
+  std::optional<StepController::AcceptedStep>
+  StepController::attempt(const double energy)
+  {
+    AcceptedStep step;
+    step.tau    = time.step_size();
+    step.result = model.advance(step.tau);
+    if (!step.result.solved)
+      {
+        retry(step.tau, step.result.failure, step.result.message, step.result.failure_details);
+        return std::nullopt;
+      }
+    if (time.error_control() && step.result.error_estimate > time.error_bound())
+      {
+        std::ostringstream reason;
+        reason << "local error estimate " << std::setprecision(3) << step.result.error_estimate
+               << " above 'error tolerance' " << time.error_bound();
+        retry(step.tau,
+              StepFailure::error_estimate,
+              reason.str(),
+              "",
+              std::max(0.2, time.error_step_factor(step.result.error_estimate)));
+        return std::nullopt;
+      }
+    {
+      std::optional<TimerOutput::Scope> section;
+      if (timer)
+        section.emplace(*timer, "curvature and energy");
+      const FluidDeformableSurface::Energies candidate = model.candidate_energies();
+      step.willmore                                    = candidate.willmore;
+      step.total_energy                                = candidate.total;
+    }
+    EnergyStepController::Decision decision;
+    if (energy_control)
+      decision = energy_control->decide(energy, step.total_energy, step.tau);
+    if (decision.verdict == EnergyStepController::Verdict::reject)
+      {
+        if (model.start_corrected_steps())
+          {
+            model.restore_last_state();
+            time.repeat_step();
+            energy_control->forget_rejection();
+            pcout << "    step rejected (" << decision.reason << "); retried at the same τ with the iterated geometry"
+                  << std::endl;
+          }
+        else if (model.fall_back_to_backward_euler(time.backward_euler_steps_after_rejection()))
+          {
+            model.restore_last_state();
+            time.repeat_step();
+            energy_control->forget_rejection();
+            pcout << "    step rejected (" << decision.reason << "); retried at the same τ as a backward-Euler step"
+                  << std::endl;
+          }
+        else
+          retry(step.tau, StepFailure::energy_rise, decision.reason, "");
+        return std::nullopt;
+      }
+    accept(step.tau, step.result.error_estimate, decision);
+    return step;
+  }
+
+  void
+  StepController::retry(const double       tau,
+                        const StepFailure  failure,
+                        const std::string &reason,
+                        const std::string &solver_report,
+                        const double       factor)
+  {
+    model.restore_last_state();
+    if (!solver_report.empty() && Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::ostringstream entry;
+        entry << "step " << time.step_number() + 1 << " at t = " << time.time() << " with τ = " << tau << ": "
+              << reason << '\n'
+              << solver_report;
+        append_to_error_log(output_directory, entry.str());
+      }
+    const std::string advice = FluidSurface::advice(failure, output_directory + "error.log");
+    time.reject(reason,
+                advice + "the output up to the last accepted step, the summary and the last checkpoint are intact",
+                factor);
+  }
+
+  void
+  StepController::accept(const double tau, const double error_estimate, const EnergyStepController::Decision &decision)
+  {
+    if (decision.verdict == EnergyStepController::Verdict::accept_with_warning)
+      pcout << "    warning: energy rose by " << std::setprecision(3) << decision.rise << " at t = " << time.time()
+            << " at a rate that does not fall with τ (space discretization); step accepted" << std::endl;
+    if (decision.step_size)
+      time.set_step_size(*decision.step_size);
+    if (model.accept(time.time() + tau))
+      pcout << "    mesh law anchored at t = " << time.time() + tau
+            << ": the membrane energy now pulls towards this surface, with full weight" << std::endl;
+    time.accept(tau, error_estimate);
+  }
+} // namespace FluidSurface
