@@ -7,7 +7,8 @@
 #   nice -n 19 benchmarks/run_quick.sh        beside other work
 # Environment:
 #   BUILD_DIR   the build directory (default: build in this checkout). Its fluid_surface is the program every
-#               benchmark runs (passed on as EXE, FLUID_SURFACE and BINARY), its libfluid_surface_library.so the
+#               benchmark runs (passed on as EXE, FLUID_SURFACE and BINARY; the first two through a wrapper in LOGS
+#               that notes every run the program refuses, exit status 2), its libfluid_surface_library.so the
 #               library the drivers of equilibrium, output_formats and surface_stokes link (BUILD_DIR is passed on);
 #               they are compiled there (geometry compiles its own in benchmarks/geometry/build). Another checkout's
 #               build can be used by a directory that holds only links to its fluid_surface and
@@ -16,9 +17,12 @@
 #               benchmarks/quick_logs, not committed).
 #   LIMIT       seconds a benchmark may take before it is stopped and counted as failed (default 3600).
 #   BUILD_LOCK  a lock file: the benchmarks' compiles run under `flock BUILD_LOCK` (passed on).
-# A benchmark passes when its run.sh --quick exits with 0 and leaves the committed files of its folder as they were
-# (checked with git when this is a git checkout): --quick writes to quick/ or work/ subfolders, which are not
-# committed, never over the committed tables and plots of the full runs. Exit status: 0 when every benchmark passed.
+# A benchmark passes when its run.sh --quick exits with 0, the program refused none of its runs (exit status 2: an
+# entry it does not know or a value or combination it does not accept; the scripts themselves go on after a failed
+# run, so this is where a stale entry shows; fuzz, which feeds refused values on purpose, is not watched), and it
+# leaves the committed files of its folder as they were (checked with git when this is a git checkout): --quick
+# writes to quick/ or work/ subfolders, which are not committed, never over the committed tables and plots of the
+# full runs. Exit status: 0 when every benchmark passed.
 #
 # Measured (git clone of main, drivers compiled on the way, every run under nice -n 19 beside other compiles and
 # runs on the 2 cores, so loaded): see benchmarks/quick_times.csv.
@@ -31,7 +35,18 @@ logs=${LOGS:-$root/benchmarks/quick_logs}
 mkdir -p "$logs"
 logs=$(cd "$logs" && pwd)
 limit=${LIMIT:-3600}
-export BUILD_DIR=$build EXE=$build/fluid_surface FLUID_SURFACE=$build/fluid_surface BINARY=$build/fluid_surface
+# The wrapper: runs the program, and on exit status 2 notes its arguments in $REFUSED (set per benchmark below).
+cat > "$logs/fluid_surface" <<WRAPPER
+#!/usr/bin/env bash
+"$build/fluid_surface" "\$@" <&0 & child=\$!
+trap 'kill -TERM \$child 2> /dev/null' TERM INT HUP
+wait \$child; status=\$?
+while kill -0 \$child 2> /dev/null; do wait \$child; status=\$?; done
+[ \$status = 2 ] && [ -n "\${REFUSED:-}" ] && echo "\$*" >> "\$REFUSED"
+exit \$status
+WRAPPER
+chmod +x "$logs/fluid_surface"
+export BUILD_DIR=$build EXE=$logs/fluid_surface FLUID_SURFACE=$logs/fluid_surface BINARY=$build/fluid_surface
 [ -n "${BUILD_LOCK:-}" ] && export BUILD_LOCK
 names=${*:-$(for f in benchmarks/*/run.sh; do basename "$(dirname "$f")"; done)}
 git=0; git -C "$root" rev-parse --is-inside-work-tree > /dev/null 2>&1 && git=1
@@ -44,6 +59,7 @@ printf '%-16s %-6s %9s  %s\n' benchmark status "wall [s]" note
 for name in $names; do
   [ -x "benchmarks/$name/run.sh" ] || { echo "run_quick.sh: no benchmarks/$name/run.sh" >&2; failed=1; continue; }
   [ $git = 1 ] && before=$(changed "$name")
+  export REFUSED=$logs/$name.refused; rm -f "$REFUSED"
   start=$(date +%s.%N)
   timeout "$limit" "benchmarks/$name/run.sh" --quick < /dev/null > "$logs/$name.log" 2>&1
   status=$?
@@ -51,6 +67,9 @@ for name in $names; do
   note=""
   if [ $status = 124 ]; then note="stopped after $limit s"
   elif [ $status != 0 ]; then note="exit $status, see $logs/$name.log"
+  fi
+  if [ -s "$REFUSED" ] && [ "$name" != fuzz ]; then
+    note="${note:+$note; }$(wc -l < "$REFUSED") runs refused (exit 2), see $REFUSED"
   fi
   if [ $git = 1 ]; then
     new=$(comm -13 <(echo "$before") <(changed "$name") | sed 's/^...//' | tr '\n' ' ')

@@ -41,7 +41,8 @@ for c in $cases; do
       echo "subsection initial state"; echo "  set azimuthal wavenumber = $m"; echo "  set azimuthal parity = $parity"; echo "end"
       echo "subsection time stepping"; echo "  set end time = $end"; echo "  set time step = $tau"
       echo "  set maximum time step = $tau"; echo "  set scheme = $scheme"; echo "  set frame = $frame"; echo "end"
-      echo "subsection geometry iteration"; echo "  set predictor = $predictor"; echo "end"
+      # the predictor only where it is not the default (linear)
+      [ "$predictor" != linear ] && { echo "subsection geometry iteration"; echo "  set predictor = $predictor"; echo "end"; }
       echo "subsection output"; echo "  set output directory = $work/$name"; echo "  set overwrite = true"
       echo "  set write vtu = false"; echo "  set screen interval = 100000"; echo "end"
     } > "$work/$name.prm"

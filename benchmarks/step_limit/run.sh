@@ -33,9 +33,18 @@ mkdir -p "$work" "$runs" $out/cases
 # c) or only the metric from the iterate (which lagged quantity sets the limit), Anderson's mixing. all1, normal1:
 # one re-assembly whatever its change (tolerance 0: a predictor–corrector step of two solves); mid1: all1 on the
 # midpoint surface (time level ½); metric1: one re-assembly with only the metric from the predicted surface; bdf2:
-# all1 with time stepping/scheme = BDF2 (second order).
+# all1 with time stepping/scheme = BDF2 (second order). relaxation, implicit and time level are written only where they
+# differ from their defaults (anderson, all, 1), which are also what a program without these entries does: lagged,
+# anderson, all1 and bdf2 run with either; aitken, normal, metric, normal1, mid1 and metric1 need the entries (a
+# program that does not declare them refuses the case, exit 2).
 scheme_lines() {
-  iterate() { printf 'subsection geometry iteration\n  set maximum iterations = %s\n  set tolerance = %s\n  set relaxation = %s\n  set implicit = %s\n  set time level = %s\n  set apply = always\nend\n' "$1" "$2" "$3" "$4" "${5:-1}"; }
+  iterate() {
+    printf 'subsection geometry iteration\n  set maximum iterations = %s\n  set tolerance = %s\n' "$1" "$2"
+    [ "$3" != anderson ] && printf '  set relaxation = %s\n' "$3"
+    [ "$4" != all ] && printf '  set implicit = %s\n' "$4"
+    [ "${5:-1}" != 1 ] && printf '  set time level = %s\n' "$5"
+    printf '  set apply = always\nend\n'
+  }
   case $1 in
     lagged) printf 'subsection geometry iteration\n  set maximum iterations = 0\nend\n' ;;
     aitken) iterate $iterations 1e-3 aitken all ;;

@@ -36,7 +36,10 @@ variant_lines() {
     $start $tau $energy
   case $scheme in
     lagged) printf 'subsection geometry iteration\n  set maximum iterations = 0\n  set apply = always\nend\n' ;;
-    normal1|all1) printf 'subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n  set implicit = %s\n  set apply = always\nend\n' ${scheme%1} ;;
+    # implicit only where it is not the default (all): all1 runs also with a program without the entry
+    normal1|all1) printf 'subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n'
+      [ $scheme = normal1 ] && printf '  set implicit = normal\n'
+      printf '  set apply = always\nend\n' ;;
     after1) printf 'subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n  set apply = after rejection\nend\n' ;;
     bdf2) printf 'subsection geometry iteration\n  set maximum iterations = 1\n  set tolerance = 0\n  set apply = always\nend\nsubsection time stepping\n  set scheme = BDF2\nend\n' ;;
   esac
