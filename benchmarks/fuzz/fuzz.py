@@ -129,6 +129,25 @@ def selection_values(pattern):
     return options + ["", "abc", options[0].upper()]
 
 
+def quick_values(pattern, default, path):
+    """--quick: at most two values per entry besides its default (which every entry runs first, to see whether the
+    scene uses it): a range's lower bound and the value just below it (the upper bound and just above where there is
+    no lower one; 0 and nan for a real without bounds), a selection's other options, a bool's other value, a list's
+    first two values; file and directory names as in the full run."""
+    if pattern.startswith("[Finite"):
+        bounds = real_values(pattern)[len(HOSTILE_NUMBERS):]
+        return bounds[:2] or ["0", "nan"]
+    if pattern.startswith("[Integer"):
+        return integer_values(pattern)[2:4]  # lo, lo − 1
+    if pattern.startswith("[List"):
+        return list_values(pattern, default)[:2]
+    if pattern.startswith("[Selection"):
+        return [o for o in selection_values(pattern)[:-3] if o != default]
+    if pattern.startswith("[Bool"):
+        return ["false" if default == "true" else "true"]
+    return values_for(pattern, default, path)
+
+
 def values_for(pattern, default, path):
     if pattern.startswith("[Finite"):
         return real_values(pattern)
@@ -284,7 +303,8 @@ def main():
     parser.add_argument("--results", required=True)
     parser.add_argument("--timeout", type=float, default=30)
     parser.add_argument("--only", default="")
-    parser.add_argument("--quick", action="store_true", help="the first scene of each entry only")
+    parser.add_argument("--quick", action="store_true", help="the first scene of each entry only, with the values "
+                        "of quick_values()")
     parser.add_argument("--replay", default="", help="run the cases of this results.csv with --binary (e.g. an "
                         "older build) and write them with its outcomes to --results, for a before/after comparison")
     args = parser.parse_args()
@@ -310,7 +330,7 @@ def main():
             if status == 2 and "does not use it" in stderr:
                 continue
             applicable.setdefault(path, []).append(scene)
-            for value in values_for(pattern, default, path):
+            for value in (quick_values if args.quick else values_for)(pattern, default, path):
                 if (path, value) in refused_by_pattern:
                     continue  # the pattern refuses it in every scene alike
                 status, seconds, stdout, stderr, summary = run_case(binary, args.work, scene,

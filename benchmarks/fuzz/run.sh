@@ -3,7 +3,8 @@
 # Parameter fuzzer: every entry of `fluid_surface --print-parameters` with boundary and hostile values derived
 # from its pattern, on short coarse runs of each scene and on --equilibrium (see README.md here).
 #   benchmarks/fuzz/run.sh [--quick] [--only SUBSTRING] [--timeout SECONDS]     (from the repository root)
-# --quick: each entry on its first scene only. Writes benchmarks/fuzz/results.csv and run.log (--quick: quick/results.csv
+# --quick: each entry on its first scene only, with at most two values besides its default (fuzz.py, quick_values; the
+# whole set of values took over 30 minutes). Writes benchmarks/fuzz/results.csv and run.log (--quick: quick/results.csv
 # and quick/run.log, not committed);
 # exit status 1 if a case failed (a solver exit 1 with a dump, a crash, a refusal that does not name the entry).
 set -euo pipefail

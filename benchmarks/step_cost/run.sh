@@ -55,4 +55,4 @@ PY
   done
 done
 cp $work/results.csv $out/results.csv
-/usr/bin/python3 $out/plot.py $out
+/usr/bin/python3 benchmarks/step_cost/plot.py $out
