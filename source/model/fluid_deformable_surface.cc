@@ -417,12 +417,11 @@ namespace FluidSurface
     const TimeScheme::StepRatioLimit limit  = scheme.step_ratio_limit();
     time.limit_step_ratio(limit.ratio, limit.reason);
     const GeometryIteration &iteration = step.components().geometry_iteration;
-    if (scheme.needs_new_level_geometry() && !(iteration.enabled() && iteration.apply == GeometryIteration::Apply::always &&
-                                               iteration.time_level == 1))
+    if (scheme.needs_new_level_geometry() && !(iteration.enabled() && iteration.apply == GeometryIteration::Apply::always))
       throw_invalid_entry("time stepping/scheme",
                           scheme.name(),
-                          "'backward Euler', or 'geometry iteration/maximum iterations' ≥ 1 with apply = always and "
-                          "time level = 1 (a second-order scheme needs the geometry of its new time level; a lagged "
-                          "geometry is first order)");
+                          "'backward Euler', or 'geometry iteration/maximum iterations' ≥ 1 with apply = always (a "
+                          "second-order scheme needs the geometry of its new time level; a lagged geometry is first "
+                          "order)");
   }
 } // namespace FluidSurface

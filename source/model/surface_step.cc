@@ -204,12 +204,6 @@ namespace FluidSurface
   }
 
   void
-  SurfaceStep::assemble(const StepUnderWay &step, const VectorType &normal)
-  {
-    step.assembly.assemble(assembly_data(step, normal));
-  }
-
-  void
   SurfaceStep::set_up_global_constraints(const StepUnderWay &step, GlobalConstraints &constraints) const
   {
     const StepRequest &request = step.request;
@@ -297,40 +291,21 @@ namespace FluidSurface
   SurfaceStep::iterate_geometry(StepUnderWay &step, BorderedSystem::BlockVector &solution, Result &result)
   {
     const GeometryIteration &iteration = parts.geometry_iteration;
-    using Implicit                     = GeometryIteration::Implicit;
-    const double node_spacing =
+    const double             node_spacing =
       std::sqrt(step.old_measures.area / geometry.triangulation().n_global_active_cells()) / geometry.degree();
     bool       converged = false;
     // The surface Ỹ_k the step is assembled on; the next one from Ỹ_k and G(Ỹ_k), the solve's new position.
     VectorType             surface = solution.block(0);
-    FixedPointAcceleration acceleration(iteration,
-                                        [this](const VectorType &a, const VectorType &b) { return system.position_dot(a, b); });
+    FixedPointAcceleration acceleration([this](const VectorType &a, const VectorType &b) { return system.position_dot(a, b); });
     for (unsigned int k = 1; k <= iteration.max_iterations && !converged; ++k)
       {
         candidate_solution = surface;
         system.copy_new_position_to_geometry(candidate_solution);
-        if (iteration.time_level < 1)
-          {
-            // S^{m+θ}: X̂ + θ (Ỹ_k − X̂)
-            VectorType level(geometry.locally_owned_dofs(), geometry.get_communicator()),
-              old(geometry.locally_owned_dofs(), geometry.get_communicator());
-            level = geometry.position();
-            old   = step.start.position;
-            level.sadd(iteration.time_level, 1 - iteration.time_level, old);
-            geometry.set_position(level);
-          }
         {
           TimerSection section(step_timer, "assembly");
           step.evaluated_curvature = geometry.curvature();
-          if (iteration.implicit == Implicit::normal)
-            {
-              restore_old_geometry();
-              assemble(step, step.evaluated_curvature.normal);
-            }
-          else
-            assemble(step,
-                     iteration.implicit == Implicit::metric ? step.old_curvature.normal : geometry.normal_field());
-          if (step.constraints.rigid_rows && parts.flow.inertia && iteration.implicit != Implicit::normal)
+          step.assembly.assemble(assembly_data(step, geometry.normal_field()));
+          if (step.constraints.rigid_rows && parts.flow.inertia)
             set_constraint_values(rigid_motion(step.request, state.solution).momenta, step.constraints);
         }
         if (!solve(step, solution, result, true))
@@ -435,7 +410,7 @@ namespace FluidSurface
           TimerSection section(step_timer, "assembly");
           if (predicted)
             system.copy_new_position_to_geometry(*extrapolated);
-          assemble(step, geometry.normal_field());
+          step.assembly.assemble(assembly_data(step, geometry.normal_field()));
         }
         set_up_global_constraints(step, step.constraints);
         set_constraint_values(predicted ? rigid_motion(request, state.solution).momenta : frame.motion.momenta,

@@ -79,17 +79,14 @@ namespace FluidSurface
     quadratic = old_fields;
     quadratic.sadd((tau + tp) * (tau + tp + tpp) / (tp * (tp + tpp)), -tau * (tau + tp + tpp) / (tp * tpp), previous);
     quadratic.add(tau * (tau + tp) / ((tp + tpp) * tpp), earlier);
-    if (predictor == GeometryIteration::Predictor::quadratic_normal)
-      {
-        // The shape (the normal part) to third order, the nodes' tangential places of the linear one: their
-        // rows take the geometry at full weight, and the quadratic predictor's sevenfold amplification of
-        // unresolved tangential motion broke the relaxing prolate's mesh (doc/scheme.md).
-        quadratic -= linear;
-        VectorType normal_part = system.owned_vector();
-        normal_part            = linear;
-        system.add_normal_part(quadratic, system.geometry().normal_field(), normal_part);
-        quadratic = normal_part;
-      }
+    // The shape (the normal part) to third order, the nodes' tangential places of the linear one: their rows take
+    // the geometry at full weight, and the quadratic predictor's sevenfold amplification of unresolved tangential
+    // motion broke the relaxing prolate's mesh (doc/scheme.md).
+    quadratic -= linear;
+    VectorType normal_part = system.owned_vector();
+    normal_part            = linear;
+    system.add_normal_part(quadratic, system.geometry().normal_field(), normal_part);
+    quadratic = normal_part;
     quadratic_fields = system.ghosted_vector();
     quadratic_fields = quadratic;
     return quadratic_fields;

@@ -48,17 +48,19 @@ namespace FluidSurface
               std::max(0.2, time.error_step_factor(step.result.error_estimate)));
         return std::nullopt;
       }
-    {
-      std::optional<TimerOutput::Scope> section;
-      if (timer)
-        section.emplace(*timer, "curvature and energy");
-      const FluidDeformableSurface::Energies candidate = model.candidate_energies();
-      step.willmore                                    = candidate.willmore;
-      step.total_energy                                = candidate.total;
-    }
     EnergyStepController::Decision decision;
     if (energy_control)
-      decision = energy_control->decide(energy, step.total_energy, step.tau);
+      {
+        {
+          std::optional<TimerOutput::Scope> section;
+          if (timer)
+            section.emplace(*timer, "curvature and energy");
+          const FluidDeformableSurface::Energies candidate = model.candidate_energies();
+          step.willmore                                    = candidate.willmore;
+          step.total_energy                                = candidate.total;
+        }
+        decision = energy_control->decide(energy, step.total_energy, step.tau);
+      }
     if (decision.verdict == EnergyStepController::Verdict::reject)
       {
         if (model.start_corrected_steps())

@@ -90,7 +90,7 @@ namespace FluidSurface
                       "solves per step; it damps a resolved oscillation of frequency ν by (γ⁴/2)(ντ)⁴ per step where "
                       "BDF2 damps it by (ντ)⁴/4; with the linear predictor and the conformal mesh law it is not robust (doc/scheme.md, \"SDIRK2\"). "
                       "BDF2 and SDIRK2 need 'geometry "
-                      "iteration/maximum iterations' ≥ 1, apply = always and time level = 1 (a lagged geometry is "
+                      "iteration/maximum iterations' ≥ 1 and apply = always (a lagged geometry is "
                       "first order; doc/scheme.md, \"Second order in time\").");
     prm.declare_entry("frame",
                       "lab",

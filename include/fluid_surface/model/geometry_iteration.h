@@ -17,8 +17,9 @@ namespace FluidSurface
    * surface S^m of the last step (the lagged scheme), is assembled again on the surface S^{m+1,k} of its own
    * solution and solved again (GMRES preconditioned by the kept factorization), N_g times or until the new nodes
    * move by less than ε_g h between two iterates (h = √(A/N_cells)/k, the node spacing). The data of the old time
-   * level (u^m, X^m, the rigid motion of the shape, the drift corrections) stay those of S^m; what comes from the
-   * iterate is chosen by `implicit`; one re-assembly without a test (ε_g = 0) is a predictor–corrector step.
+   * level (u^m, X^m, the drift corrections) stay those of S^m, the rest comes from the iterate; the next iterate is
+   * formed by Anderson's mixing (FixedPointAcceleration); one re-assembly without a test (ε_g = 0) is a
+   * predictor–corrector step.
    * doc/scheme.md, "Implicit geometry".
    */
   struct GeometryIteration
@@ -37,15 +38,6 @@ namespace FluidSurface
       return max_iterations > 0;
     }
 
-    /// What the re-assemblies take from the iterate S^{m+1,k}: everything, only the normal field ñ (with c, from its
-    /// gradient), or only the metric (the mapping: surface gradients, ν, P, the transport gradient, the mesh law),
-    /// the rest from S^m.
-    enum class Implicit
-    {
-      all,
-      normal,
-      metric
-    };
 
     /// Which flow steps iterate their geometry.
     enum class Apply
@@ -59,28 +51,17 @@ namespace FluidSurface
     {
       old_surface, ///< S^m: the corrections start from the lagged geometry (an O(τ) error)
       linear,      ///< BDF2 with history: (1 + ω)X^m − ωX^{m−1} in the frame of the step (an O(τ²) error)
-      quadratic,   ///< BDF2 with two states of history: through X^m, X^{m−1}, X^{m−2} (an O(τ³) error)
-      /// The linear one plus the normal part (along ñ^m) of the quadratic one's difference from it: the shape
-      /// to O(τ³), the nodes' tangential places to O(τ²)
+      /// BDF2 with two states of history: the linear one plus the normal part (along ñ^m) of the difference of
+      /// the quadratic one through X^m, X^{m−1}, X^{m−2} from it: the shape to O(τ³), the nodes' tangential places
+      /// to O(τ²)
       quadratic_normal
     };
 
-    /// How the next iterate is taken from the last ones (FixedPointAcceleration).
-    enum class Relaxation
-    {
-      none,
-      aitken,
-      anderson
-    };
 
     unsigned int max_iterations = 0;    ///< N_g: re-assemblies after the first solve; 0: the lagged scheme
     Apply        apply          = Apply::always; ///< every flow step, or the K steps after a rejected lagged one
     unsigned int corrected_steps = 20;  ///< K: accepted steps with iterated geometry after a rejection
-    Implicit     implicit       = Implicit::all; ///< which geometric quantities come from the iterate
     Predictor    predictor      = Predictor::linear; ///< the surface of the first solve
-    Relaxation   relaxation     = Relaxation::anderson; ///< how the next iterate is formed
-    double       time_level     = 1;    ///< θ: the re-assemblies are on S^{m+θ} = X^m + θ (Ỹ_k − X^m)
-    unsigned int anderson_depth = 5;    ///< m: the number of last residual differences Anderson's mixing uses
     double       tolerance      = 1e-3; ///< ε_g: the iteration stops when max |Y^{k+1} − Y^k| ≤ ε_g h; 0: after N_g
 
     /// Whether the iteration stops at iterate @p k (1 ≤ k ≤ N_g) whose nodes moved by @p change (in units of h).
@@ -93,13 +74,12 @@ namespace FluidSurface
 
   /**
    * The next iterate x_{k+1} of a fixed point x = G(x) from x_k, its image G(x_k) and the earlier iterates, with
-   * the residual r_k = G(x_k) − x_k measured by a given inner product (the step: the new positions only).
-   * - none: x_{k+1} = G(x_k).
-   * - aitken: x_{k+1} = x_k + ω_k r_k, ω_k = −ω_{k−1} r_{k−1}·(r_k − r_{k−1})/|r_k − r_{k−1}|², clipped to [0.1, 2].
-   * - anderson: Anderson's mixing of depth m (Walker & Ni 2011): x_{k+1} = G(x_k) − Σ_i γ_i ΔG_i with the γ that
-   *   minimize |r_k − Σ_i γ_i Δr_i| over the last m differences Δr_i = r_{i+1} − r_i, ΔG_i = G(x_{i+1}) − G(x_i).
-   *   For a linear G it is GMRES on x − G(x) = 0, so it converges where the fixed point does not (a few
-   *   eigenvalues of G' outside the unit disc) and in fewer iterations where it does.
+   * the residual r_k = G(x_k) − x_k measured by a given inner product (the step: the new positions only), by
+   * Anderson's mixing of depth m (Walker & Ni 2011): x_{k+1} = G(x_k) − Σ_i γ_i ΔG_i with the γ that minimize
+   * |r_k − Σ_i γ_i Δr_i| over the last m differences Δr_i = r_{i+1} − r_i, ΔG_i = G(x_{i+1}) − G(x_i). For a
+   * linear G it is GMRES on x − G(x) = 0, so it converges where the plain fixed point x_{k+1} = G(x_k) does not (a
+   * few eigenvalues of G' outside the unit disc) and in fewer iterations where it does; Aitken's relaxation, one
+   * factor for all directions, does not (tests/geometry_fixed_point_acceleration).
    */
   class FixedPointAcceleration
   {
@@ -108,19 +88,17 @@ namespace FluidSurface
     /// The inner product in which the residuals are measured.
     using InnerProduct = std::function<double(const VectorType &, const VectorType &)>;
 
-    /// The acceleration @p parameters.relaxation of depth @p parameters.anderson_depth, residuals measured by @p dot.
-    FixedPointAcceleration(const GeometryIteration &parameters, InnerProduct dot);
+    /// Anderson's mixing of depth @p depth, the residuals measured by @p dot.
+    explicit FixedPointAcceleration(InnerProduct dot, const unsigned int depth = 5);
 
     /// Replaces @p x (the iterate x_k) by x_{k+1}, given @p image = G(x_k).
     void
     advance(VectorType &x, const VectorType &image);
 
   private:
-    const GeometryIteration::Relaxation relaxation;
-    const unsigned int                  depth;
     const InnerProduct                  dot;
+    const unsigned int                  depth;
     unsigned int                        iteration = 0;
-    double                              omega     = 1;     ///< Aitken's last ω
     VectorType                          last_residual;     ///< r_{k−1}
     VectorType                          last_image;        ///< G(x_{k−1})
     std::deque<VectorType>              residual_changes;  ///< Δr_i, the newest last

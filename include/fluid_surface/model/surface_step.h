@@ -227,9 +227,6 @@ namespace FluidSurface
     /// The data of an assembly with the normal field @p normal.
     StepAssemblyData
     assembly_data(const StepUnderWay &step, const VectorType &normal) const;
-    /// Assembles the step system on the geometry's current surface (timer section "assembly").
-    void
-    assemble(const StepUnderWay &step, const VectorType &normal);
     /**
      * The bordering of the step: the volume row (u·ñ, 1) = −(V^m − V₀)/τ_c (multiplier γ) and the rigid-motion
      * rows (momentum targets in the frame of the step), as the request asks.

@@ -292,11 +292,10 @@ namespace FluidSurface
     bool
     quadratic_predictor() const
     {
-      return predictor == GeometryIteration::Predictor::quadratic ||
-             predictor == GeometryIteration::Predictor::quadratic_normal;
+      return predictor == GeometryIteration::Predictor::quadratic_normal;
     }
-    /// The quadratic predictor (of kind predictor) through x^m = @p old_fields, x^{m−1}, x^{m−2}, the latter
-    /// carried into the frame of the step; @p linear is the linear one.
+    /// The quadratic-normal predictor through x^m = @p old_fields, x^{m−1}, x^{m−2}, the latter carried into the
+    /// frame of the step; @p linear is the linear one.
     const VectorType &
     quadratic_prediction(const VectorType &old_fields,
                          const VectorType &previous,

@@ -31,8 +31,8 @@ namespace FluidSurface
     {
       double              tau = 0;          ///< its size
       SurfaceStep::Result result;           ///< the solve
-      double              willmore     = 0; ///< ½∫H² of the new surface
-      double              total_energy = 0; ///< F of the new state
+      double              willmore     = 0; ///< ½∫H² of the new surface (with an energy check)
+      double              total_energy = 0; ///< F of the new state (with an energy check)
     };
 
     /**
