@@ -17,12 +17,12 @@
 #               benchmarks/quick_logs, not committed).
 #   LIMIT       seconds a benchmark may take before it is stopped and counted as failed (default 3600).
 #   BUILD_LOCK  a lock file: the benchmarks' compiles run under `flock BUILD_LOCK` (passed on).
-# A benchmark passes when its run.sh --quick exits with 0, the program refused none of its runs (exit status 2: an
-# entry it does not know or a value or combination it does not accept; the scripts themselves go on after a failed
-# run, so this is where a stale entry shows; fuzz, which feeds refused values on purpose, is not watched), and it
-# leaves the committed files of its folder as they were (checked with git when this is a git checkout): --quick
-# writes to quick/ or work/ subfolders, which are not committed, never over the committed tables and plots of the
-# full runs. Exit status: 0 when every benchmark passed.
+# A benchmark passes when its run.sh --quick exits with 0, its output holds no Python traceback, the program refused
+# none of its runs (exit status 2: an entry it does not know or a value or combination it does not accept; the
+# scripts go on after a failed run, so this is where a stale entry shows; fuzz, which feeds refused values on
+# purpose, is not watched), and it leaves the committed files of its folder as they were (checked with git when this
+# is a git checkout): --quick writes to quick/ or work/ subfolders, which are not committed, never over the committed
+# tables and plots of the full runs. Exit status: 0 when every benchmark passed.
 #
 # Measured (git clone of main, drivers compiled on the way, every run under nice -n 19 beside other compiles and
 # runs on the 2 cores, so loaded): see benchmarks/quick_times.csv.
@@ -68,6 +68,8 @@ for name in $names; do
   if [ $status = 124 ]; then note="stopped after $limit s"
   elif [ $status != 0 ]; then note="exit $status, see $logs/$name.log"
   fi
+  # a script that goes on after a failed step (its last command a cat) still leaves the traceback in its log
+  grep -q '^Traceback (most recent call last)' "$logs/$name.log" && note="${note:+$note; }a Python traceback in $logs/$name.log"
   if [ -s "$REFUSED" ] && [ "$name" != fuzz ]; then
     note="${note:+$note; }$(wc -l < "$REFUSED") runs refused (exit 2), see $REFUSED"
   fi

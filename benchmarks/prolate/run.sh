@@ -41,5 +41,5 @@ for c in $cases; do
   tail -n 3 $work/$name.log > $out/cases/$name.tail
 done
 { echo "$header"; cat $out/cases/*.csv; } > $out/results.csv
-/usr/bin/python3 $here/plot.py $out
+/usr/bin/python3 $here/plot.py $out || exit 1
 cat $out/results.csv

@@ -58,5 +58,6 @@ run_one() {
 }
 export -f run_one; export exe work
 echo $queue | tr ' ' '\n' | xargs -P "${JOBS:-1}" -I{} bash -c 'run_one {}'
-/usr/bin/python3 $here/table.py "$work" $queue > "$out.tmp" && mv "$out.tmp" "$out"
+/usr/bin/python3 $here/table.py "$work" $queue > "$out.tmp" || exit 1
+mv "$out.tmp" "$out"
 cat "$out"
