@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // HDF5/XDMF output (output/format = hdf5) of scene full (the rotating prolate of checkpoint_common.h, refinement 2):
-// 1. Two steps written as VTU (run V) and as HDF5 (run H): every field of H/solution-00002.h5 is read back with
-//    h5py and agrees, node by node, with V/solution-00002.vtu to the VTU's float32 rounding; the cells are the same
-//    curved sub-cells; solution.xdmf lists steps 0, 1, 2 with quadrilateral topology and the sizes of the .h5 files.
+// 1. Two steps written as VTU (run V) and as HDF5 (run H), each cell as 3×3 curved sub-cells (output/subdivisions
+//    = 3; default 2): every field of H/solution-00002.h5 is read back with h5py and agrees, node by node, with
+//    V/solution-00002.vtu to the VTU's float32 rounding; the cells are the same curved sub-cells (96 · 9 of them);
+//    solution.xdmf lists steps 0, 1, 2 with quadrilateral topology and the sizes of the .h5 files.
 // 2. Resume (run R, checkpoints every 2 steps, 6 steps): stopped after step 3, resumed to the end; then its newest
 //    checkpoint (step 6) is corrupted and the run resumed from step 4 with end time 0.04, which cuts solution.xdmf
 //    back to steps 0-4; resumed once more to t = 0.06. Each time solution.xdmf lists each step once, in order.
@@ -56,7 +57,9 @@ main(int argc, char **argv)
       std::filesystem::remove_all(d);
   MPI_Barrier(MPI_COMM_WORLD);
 
-  const Overrides two_steps = {{"output/write vtu", "true"}, {"time stepping/end time", "0.02"}};
+  const Overrides two_steps = {{"output/write vtu", "true"},
+                               {"output/subdivisions", "3"},
+                               {"time stepping/end time", "0.02"}};
   Overrides       vtu = two_steps, hdf5 = two_steps;
   vtu.push_back({"output/format", "vtu"});
   hdf5.push_back({"output/format", "hdf5"});

@@ -4,8 +4,11 @@
 // −2.55 at this refinement (the seeded nonlinear run gives 2.567 and −2.537 at refinement 3, benchmarks/spectrum).
 // Printed: the leading row of spectrum.csv rounded, and whether σ is within 2 % of the seeded run's. Then the same
 // with at most 4 Krylov vectors and thick restarts: it converges to the σ of the 20 vectors (two restarts). Then
-// with at most 3 Krylov vectors and no restart: the eigenvalue cannot converge, the run ends with exit status 1 and
-// one line, and spectrum.csv keeps its rows. About 50 s.
+// with at most 3 Krylov vectors and no restart: the eigenvalue cannot converge to the residual tolerance 0.1
+// (stability/residual tolerance; default 1e-3, residual 0.178), the run ends with exit status 1 and one line, and
+// spectrum.csv keeps its rows. Last, with an equilibrium tolerance of 1e-3 (stability/equilibrium tolerance; default
+// 0.02) the interpolated equilibrium, which drifts at 5.7e-3 R per unit time, is refused after the unperturbed map:
+// exit status 2 and one line. About 55 s.
 #include <deal.II/base/mpi.h>
 
 #include <fluid_surface/scenes/run_program.h>
@@ -25,10 +28,15 @@ using namespace FluidSurface;
 
 namespace
 {
-  /// Runs the oblate's m = 2 even with at most @p krylov vectors and @p restarts restarts in @p directory; returns the exit status and the
-  /// rows of spectrum.csv (split at commas).
+  /// Runs the oblate's m = 2 even with at most @p krylov vectors and @p restarts restarts and the further entries
+  /// @p extra of subsection stability in @p directory; returns the exit status and the rows of spectrum.csv (split at
+  /// commas).
   std::pair<int, std::vector<std::vector<std::string>>>
-  spectrum(const std::string &directory, const unsigned int krylov, const unsigned int restarts, std::string &message)
+  spectrum(const std::string  &directory,
+           const unsigned int  krylov,
+           const unsigned int  restarts,
+           std::string        &message,
+           const std::string  &extra = "")
   {
     std::filesystem::remove_all(directory);
     const std::string file = directory + ".prm";
@@ -44,8 +52,9 @@ namespace
          "subsection mesh redistribution\n  set tangential law = membrane\nend\n"
          "subsection stability\n  set wavenumbers = 2\n  set parities = even\n  set map time = 0.3\n"
          "  set maximum Krylov dimension = "
-      << krylov << "\n  set maximum restarts = " << restarts
-      << "\nend\n"
+      << krylov << "\n  set maximum restarts = " << restarts << "\n"
+      << extra
+      << "end\n"
          "subsection output\n  set output directory = "
       << directory << "\n  set report wall time = false\nend\n";
     std::ostringstream screen, errors;
@@ -83,9 +92,15 @@ main(int argc, char **argv)
               << (std::abs(std::stod(restarted_rows[1][2]) / std::stod(rows[1][2]) - 1) < 1e-3 ? "yes" : "no")
               << std::endl;
 
-  const auto [short_status, short_rows] = spectrum("results_short", 3, 0, message);
+  const auto [short_status, short_rows] = spectrum("results_short", 3, 0, message, "  set residual tolerance = 0.1\n");
   const std::string prefix              = "fluid_surface: error: ";
   std::cout << "at most 3 Krylov vectors: exit status " << short_status << ", rows kept " << short_rows.size() - 1
             << "\n"
+            << (message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message) << std::flush;
+
+  const auto [drift_status, drift_rows] =
+    spectrum("results_drift", 20, 5, message, "  set equilibrium tolerance = 1e-3\n");
+  std::cout << "equilibrium tolerance 1e-3: exit status " << drift_status << ", spectrum.csv written: "
+            << (drift_rows.empty() ? "no" : "yes") << "\n"
             << (message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message) << std::flush;
 }
