@@ -24,8 +24,17 @@
 # is a git checkout): --quick writes to quick/ or work/ subfolders, which are not committed, never over the committed
 # tables and plots of the full runs. Exit status: 0 when every benchmark passed.
 #
-# Measured (git clone of main, drivers compiled on the way, every run under nice -n 19 beside other compiles and
-# runs on the 2 cores, so loaded): see benchmarks/quick_times.csv.
+# Measured on the 2-core machine, 2026-12-06, each time in a fresh git clone of main with BUILD_DIR a directory of links
+# to main's build (so the drivers were compiled on the way, under BUILD_LOCK) and everything under nice -n 19
+# (benchmarks/quick_times.csv, seconds per benchmark):
+#   loaded_s: beside other compiles and test runs (load average 4.7 to 7.5 when sampled): 2880 s in all, of which convergence 1102 s with
+#             its former --quick (both mesh laws); its present --quick took 208 s on its own afterwards (load falling
+#             from about 2.5), which makes 1983 s (33 min) for the present set. Every benchmark passed.
+#   idle_s:   with nothing else running (load average about 1): 1299 s (22 min); every benchmark passed but
+#             surface_stokes, whose driver aborted (SIGABRT) after 60 s, and again after 159 s when rerun: a data race
+#             in the library's threaded assembly (SurfaceFlow::node_frames calls SurfaceGeometry::normal_field(), which
+#             computes the lazily cached curvature, from the WorkStream workers), not in the script. Loaded it passed
+#             in 318 s, so the whole set takes about 26 minutes on an idle machine once it passes.
 set -u
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
