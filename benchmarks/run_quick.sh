@@ -27,9 +27,10 @@
 # Measured on the 2-core machine, 2026-12-06, each time in a fresh git clone of main with BUILD_DIR a directory of links
 # to main's build (so the drivers were compiled on the way, under BUILD_LOCK) and everything under nice -n 19
 # (benchmarks/quick_times.csv, seconds per benchmark):
-#   loaded_s: beside other compiles and test runs (load average 4.7 to 7.5 when sampled): 2880 s in all, of which convergence 1102 s with
-#             its former --quick (both mesh laws); its present --quick took 208 s on its own afterwards (load falling
-#             from about 2.5), which makes 1983 s (33 min) for the present set. Every benchmark passed.
+#   loaded_s: beside other compiles and test runs (load average 4.7 to 7.5 when sampled): 2880 s in all, of which
+#             convergence 1102 s with its former --quick (both mesh laws); its present --quick took 208 s on its own
+#             afterwards (load falling from about 2.5), which makes 1983 s (33 min) for the present set. Every
+#             benchmark passed.
 #   idle_s:   with nothing else running (load average about 1): 1299 s (22 min); every benchmark passed but
 #             surface_stokes, whose driver aborted (SIGABRT) after 60 s, and again after 159 s when rerun: a data race
 #             in the library's threaded assembly (SurfaceFlow::node_frames calls SurfaceGeometry::normal_field(), which
