@@ -33,7 +33,7 @@ namespace
   std::tuple<double, double, double, Tensor<1, 3>>
   measures(SurfaceGeometry &geometry, const FluidDeformableSurface &model)
   {
-    const double              F = model.kinetic_energy() + model.components().bending.energy(geometry.willmore_energy());
+    const double              F = model.kinetic_energy() + model.step().components().bending.energy(geometry.willmore_energy());
     const auto                m = geometry.measure();
     const Quadrature<2>       q = geometry.quadrature();
     FEValues<2, 3>            fe_values(geometry.mapping(), model.dof_handler().get_fe(), q,

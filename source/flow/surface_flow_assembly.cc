@@ -438,6 +438,11 @@ namespace FluidSurface
               lor_velocity_matrix = 0;
           }
       }
+    // The normal field is computed lazily; the node frames of the workers read it, so it is filled here, on
+    // one thread (the workers would otherwise race to fill the geometry's cache).
+    if (assemble_matrix && parameters.solver == LinearSolver::block_preconditioned && preconditioner_outdated &&
+        parameters.velocity_amg_node_frames)
+      geometry.normal_field();
     using CellFilter = FilteredIterator<typename DoFHandler<2, 3>::active_cell_iterator>;
     CopyData copy(fe.n_dofs_per_cell());
     copy.with_matrix = assemble_matrix;

@@ -19,7 +19,7 @@ namespace FluidSurface
 
   FluidDeformableSurface::FluidDeformableSurface(SurfaceGeometry &geometry)
     : geometry(geometry)
-    , step(geometry, state)
+    , surface_step(geometry, state)
   {}
 
   void
@@ -86,9 +86,9 @@ namespace FluidSurface
   void
   FluidDeformableSurface::parse_parameters(ParameterHandler &prm, const double maximum_time_step)
   {
-    step.parse_parameters(prm, maximum_time_step);
-    reparametrization.parse_parameters(prm, step.components().redistribution.mesh_quality_floor);
-    run_request = StepRequest::flow_step(step.components().redistribution.law);
+    surface_step.parse_parameters(prm, maximum_time_step);
+    reparametrization.parse_parameters(prm, surface_step.components().redistribution.mesh_quality_floor);
+    run_request = StepRequest::flow_step(surface_step.components().redistribution.law);
     prm.enter_subsection("initial state");
     initial_entries.angular_velocity     = prm.get_double("angular velocity");
     initial_entries.equilibrium_rotation = prm.get_bool("equilibrium rotation");
@@ -218,13 +218,13 @@ namespace FluidSurface
       }
     if (initial_entries.equilibrium_rotation)
       angular_velocity = geometry.equilibrium_shape()->angular_velocity();
-    step.setup_system();
-    state.reinit(step.dof_handler(), geometry);
+    surface_step.setup_system();
+    state.reinit(surface_step.dof_handler(), geometry);
     set_initial_velocity();
     // The targets with the quadrature of the projection and the diagnostics (the step's rows use the
     // assembly's: their difference is what ConservationProjection removes).
-    if (step.components().flow.conserve_momenta)
-      state.rigid_targets = ConservationProjection::momenta(geometry, step.dof_handler(), state.solution);
+    if (surface_step.components().flow.conserve_momenta)
+      state.rigid_targets = ConservationProjection::momenta(geometry, surface_step.dof_handler(), state.solution);
     const SurfaceGeometry::Measures m = geometry.measure();
     state.target_volume               = m.volume;
     state.target_area                 = m.area;
@@ -248,8 +248,8 @@ namespace FluidSurface
   void
   FluidDeformableSurface::set_reference_position()
   {
-    VectorType reference(step.dof_handler().locally_owned_dofs(), geometry.get_communicator());
-    step.copy_position_into(state.reference_surface, reference);
+    VectorType reference(surface_step.dof_handler().locally_owned_dofs(), geometry.get_communicator());
+    surface_step.copy_position_into(state.reference_surface, reference);
     state.reference_position = reference;
   }
 
@@ -257,7 +257,7 @@ namespace FluidSurface
   FluidDeformableSurface::set_prescribed_velocity(const Function<3> &velocity)
   {
     AssertDimension(velocity.n_components, 3);
-    AssertThrow(!step.components().volume_constraint.enabled && !step.components().momentum_constraints.active(),
+    AssertThrow(!surface_step.components().volume_constraint.enabled && !surface_step.components().momentum_constraints.active(),
                 ExcMessage("a prescribed motion needs the volume and momentum constraints off"));
     run_request.velocity   = StepRequest::Velocity::prescribed;
     run_request.prescribed = &velocity;
@@ -266,10 +266,10 @@ namespace FluidSurface
   void
   FluidDeformableSurface::set_initial_velocity()
   {
-    VectorType initial(step.dof_handler().locally_owned_dofs(), geometry.get_communicator());
+    VectorType initial(surface_step.dof_handler().locally_owned_dofs(), geometry.get_communicator());
     VectorTools::interpolate(geometry.mapping(),
-                             step.dof_handler(),
-                             InitialVelocity(step.dof_handler().get_fe().n_components(),
+                             surface_step.dof_handler(),
+                             InitialVelocity(surface_step.dof_handler().get_fe().n_components(),
                                              initial_entries.translation_velocity,
                                              angular_velocity,
                                              initial_entries.rotation_axis,
@@ -277,9 +277,9 @@ namespace FluidSurface
                                              initial_entries.velocity_perturbation,
                                              initial_entries.random_seed),
                              initial);
-    // Y starts at X so that the state is complete; κ, y, p are outputs of a step.
-    step.copy_position_into(geometry.position(), initial);
-    step.hanging_node_constraints().distribute(initial);
+    // Y starts at X so that the state is complete; κ, y, p are outputs of a surface_step.
+    surface_step.copy_position_into(geometry.position(), initial);
+    surface_step.hanging_node_constraints().distribute(initial);
     state.solution = initial;
   }
 } // namespace FluidSurface
@@ -291,17 +291,17 @@ namespace FluidSurface
   SurfaceStep::Result
   FluidDeformableSurface::advance(const double tau)
   {
-    return step.advance(run_request, tau);
+    return surface_step.advance(run_request, tau, candidate);
   }
 
   bool
   FluidDeformableSurface::accept(const double time)
   {
-    step.accept_history(); // before the state moves on: BDF2 keeps it as x^{m−1}
-    state.position  = geometry.position();
-    state.curvature = geometry.curvature();
-    state.solution  = step.candidate();
-    const double anchor_time = step.components().redistribution.anchor_time;
+    surface_step.accept_history(candidate); // before the state moves on: BDF2 keeps it as x^{m−1}
+    state.position  = candidate.position;
+    state.curvature = candidate.curvature;
+    state.solution  = candidate.solution;
+    const double anchor_time = surface_step.components().redistribution.anchor_time;
     if (anchored || anchor_time < 0 || time < anchor_time)
       return false;
     anchor();
@@ -312,7 +312,7 @@ namespace FluidSurface
   FluidDeformableSurface::anchor()
   {
     set_reference_surface(state.position);
-    step.pull_fully();
+    surface_step.pull_fully();
     anchored = true;
   }
 
@@ -325,7 +325,7 @@ namespace FluidSurface
       geometry.set_position(position, *state.curvature);
     else
       geometry.set_position(position);
-    step.solver().request_factorization();
+    surface_step.solver().request_factorization();
   }
 
   void
@@ -336,32 +336,32 @@ namespace FluidSurface
     VectorType position(geometry.locally_owned_dofs(), geometry.get_communicator());
     position = state.position;
     geometry.set_position(position);
-    VectorType solution(step.dof_handler().locally_owned_dofs(), geometry.get_communicator());
+    VectorType solution(surface_step.dof_handler().locally_owned_dofs(), geometry.get_communicator());
     solution = state.solution;
-    step.copy_position_into(position, solution);
-    step.hanging_node_constraints().distribute(solution);
+    surface_step.copy_position_into(position, solution);
+    surface_step.hanging_node_constraints().distribute(solution);
     state.solution = solution;
     set_reference_position();
-    step.forget_history();
-    step.solver().request_factorization();
+    surface_step.forget_history();
+    surface_step.solver().request_factorization();
   }
 
   SurfaceReparametrization::Result
   FluidDeformableSurface::reparametrize()
   {
     const SurfaceReparametrization::Result result =
-      reparametrization.reparametrize(step, state, run_request, [&]() {
-        return total_energy(kinetic_energy(state.solution), geometry.willmore_energy());
+      reparametrization.reparametrize(surface_step, state, run_request, [&]() {
+        return total_energy(kinetic_energy(), geometry.willmore_energy());
       });
     if (result.done)
-      step.forget_history(); // the transferred state has no history
+      surface_step.forget_history(); // the transferred state has no history
     return result;
   }
 
   double
   FluidDeformableSurface::total_energy(const double kinetic_energy, const double willmore_energy) const
   {
-    return (step.components().flow.inertia ? kinetic_energy : 0.0) + step.components().bending.energy(willmore_energy);
+    return (surface_step.components().flow.inertia ? kinetic_energy : 0.0) + surface_step.components().bending.energy(willmore_energy);
   }
 
   void
@@ -374,21 +374,21 @@ namespace FluidSurface
       3, DataComponentInterpretation::component_is_part_of_vector);
     kinds.insert(kinds.end(), 3, DataComponentInterpretation::component_is_scalar);
     kinds.insert(kinds.end(), 3, DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(step.dof_handler(), state.solution, names, kinds);
+    data_out.add_data_vector(surface_step.dof_handler(), state.solution, names, kinds);
     static const SpeedPostprocessor speed;
-    data_out.add_data_vector(step.dof_handler(), state.solution, speed);
+    data_out.add_data_vector(surface_step.dof_handler(), state.solution, speed);
   }
 
   void
   FluidDeformableSurface::save(CheckpointData &data) const
   {
-    state.save(data, step.dof_handler(), geometry);
-    data.set("model/element", step.dof_handler().get_fe().get_name());
-    data.set("model/factorizations", step.solver().n_factorizations());
+    state.save(data, surface_step.dof_handler(), geometry);
+    data.set("model/element", surface_step.dof_handler().get_fe().get_name());
+    data.set("model/factorizations", surface_step.solver().n_factorizations());
     // The seeded random fields are drawn in setup() only; the seed is kept for the record.
     data.set("model/random seed", initial_entries.random_seed);
     reparametrization.save(data);
-    step.save_history(data);
+    surface_step.save_history(data);
     if (anchored)
       data.set("model/anchored", 1u);
   }
@@ -396,27 +396,27 @@ namespace FluidSurface
   void
   FluidDeformableSurface::load(const CheckpointData &data)
   {
-    step.setup_system();
-    const std::string element = step.dof_handler().get_fe().get_name();
+    surface_step.setup_system();
+    const std::string element = surface_step.dof_handler().get_fe().get_name();
     if (data.get_string("model/element") != element)
       throw std::runtime_error("the checkpoint holds the element " + data.get_string("model/element") +
                                ", this run uses " + element);
-    state.load(data, step.dof_handler(), geometry);
+    state.load(data, surface_step.dof_handler(), geometry);
     set_reference_position();
-    step.solver().set_n_factorizations(data.get_unsigned("model/factorizations"));
+    surface_step.solver().set_n_factorizations(data.get_unsigned("model/factorizations"));
     reparametrization.load(data);
-    step.load_history(data);
+    surface_step.load_history(data);
     anchored = data.has("model/anchored");
   }
 
   void
   FluidDeformableSurface::set_time_scheme(const TimeStepper &time)
   {
-    step.set_time_scheme(time.scheme(), time.frame());
-    const TimeScheme                &scheme = step.time_scheme_of_flow_steps();
+    surface_step.set_time_scheme(time.scheme(), time.frame());
+    const TimeScheme                &scheme = surface_step.flow_time_scheme();
     const TimeScheme::StepRatioLimit limit  = scheme.step_ratio_limit();
     time.limit_step_ratio(limit.ratio, limit.reason);
-    const GeometryIteration &iteration = step.components().geometry_iteration;
+    const GeometryIteration &iteration = surface_step.components().geometry_iteration;
     if (scheme.needs_new_level_geometry() && !(iteration.enabled() && iteration.apply == GeometryIteration::Apply::always))
       throw_invalid_entry("time stepping/scheme",
                           scheme.name(),

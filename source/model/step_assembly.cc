@@ -110,14 +110,14 @@ namespace FluidSurface
         // In the carried frame (ũ = Qᵀu, the new position relative to the carry) the frame's rotation adds
         // (Ω × ũ, v), and the mesh velocity in the convection is R + (Ỹ − X^m)/τ, i.e. W = X^m − τR.
         const Point<3> frame_point = data.frame_velocity_on_new_surface ? p.position : old_point;
-        const Point<3> start       = data.frame.kind == StepFrame::Kind::carried ?
-                                       old_point - tau * data.frame.carried.value(frame_point) :
+        const Point<3> start       = data.frame->kind == StepFrame::Kind::carried ?
+                                       old_point - tau * data.frame->carried.value(frame_point) :
                                        old_point;
-        const bool turning = data.frame.solved_in_frame() && flow.inertia;
+        const bool turning = data.frame->solved_in_frame() && flow.inertia;
         for (const unsigned int j : layout.velocity)
           {
             if (turning)
-              cell.turned_velocity[j] = SurfaceFluid::turned_velocity(p, j, data.frame.carried.rotation);
+              cell.turned_velocity[j] = SurfaceFluid::turned_velocity(p, j, data.frame->carried.rotation);
             if (flow.convection)
               cell.convected_velocity[j] = SurfaceFluid::convected_velocity(p, j);
           }
@@ -173,11 +173,11 @@ namespace FluidSurface
         LocalSystem            &local  = *cell.local;
         const FlowPointValues  &p      = cell.point.flow;
         const double            dA     = p.JxW;
-        const Point<3>          y      = data.frame.carried.carry(p.position, data.tau);
+        const Point<3>          y      = data.frame->carried.carry(p.position, data.tau);
         Tensor<1, 3>            u;
         for (unsigned int d = 0; d < 3; ++d)
           u[d] = velocity.value(y, d);
-        u = transpose(data.frame.carried.rotation_over(data.tau)) * u;
+        u = transpose(data.frame->carried.rotation_over(data.tau)) * u;
         for (const unsigned int i : layout.velocity)
           {
             local.rhs(i) += (u * p.velocity[i]) * dA;
@@ -247,17 +247,17 @@ namespace FluidSurface
         const StepAssemblyData &data = *cell.data;
         const Point<3>          x(cell.nodal_old_position[q]);
         LocalSystem            &local = *cell.local;
-        if (data.frame.co_rotating())
+        if (data.frame->co_rotating())
           {
             const Point<3> frame_point = data.frame_velocity_on_new_surface ? cell.nodal.position : x;
             redistribution.assemble_kinematics(
-              cell.nodal, *cell.layout, data.tau, x - data.tau * data.frame.carried.value(frame_point), local.matrix, local.rhs);
+              cell.nodal, *cell.layout, data.tau, x - data.tau * data.frame->carried.value(frame_point), local.matrix, local.rhs);
             redistribution.assemble_nodal_terms(cell.nodal, *cell.layout, data.tau, x, local.matrix, local.rhs);
             return;
           }
         redistribution.assemble_kinematics(cell.nodal, *cell.layout, data.tau, x, local.matrix, local.rhs);
         redistribution.assemble_nodal_terms(
-          cell.nodal, *cell.layout, data.tau, x + data.tau * data.frame.carried.value(x), local.matrix, local.rhs);
+          cell.nodal, *cell.layout, data.tau, x + data.tau * data.frame->carried.value(x), local.matrix, local.rhs);
       }
 
     private:
@@ -285,7 +285,7 @@ namespace FluidSurface
         cell.tangential_rhs.reinit(n);
         cell.node_normals.resize(cell.layout->new_position_nodes.size());
         cell.flow[FEValuesExtractors::Vector(DofLayout::new_position_component)].get_function_gradients(
-          cell.data->reference_position, cell.reference_gradient);
+          *cell.data->reference_position, cell.reference_gradient);
       }
       void
       gauss_point(const unsigned int q, CellContext &cell) const override
@@ -314,7 +314,7 @@ namespace FluidSurface
         const Point<3>          x(cell.nodal_old_position[q]);
         const Point<3> frame_point = data.frame_velocity_on_new_surface ? nodal.position : x;
         redistribution.assemble_kinematics(
-          nodal, layout, data.tau, x - data.tau * data.frame.carried.value(frame_point), local.matrix, local.rhs);
+          nodal, layout, data.tau, x - data.tau * data.frame->carried.value(frame_point), local.matrix, local.rhs);
         redistribution.assemble_nodal_terms(nodal, layout, data.tau, x, local.matrix, local.rhs);
         // The nodal rule's points are the nodes: the node whose shape function is 1 here.
         for (unsigned int n = 0; n < layout.new_position_nodes.size(); ++n)
@@ -432,18 +432,18 @@ namespace FluidSurface
                                                                           &geometry.dof_handler());
       context.flow.reinit(cell);
       context.geometry.reinit(geometry_cell);
-      context.geometry[vector].get_function_values(data.normal, context.smooth_normal);
-      context.geometry[vector].get_function_gradients(data.normal, context.smooth_normal_gradient);
-      context.flow[vector].get_function_values(data.old_fields, context.old_velocity);
-      if (&data.transport_fields != &data.old_fields)
-        context.flow[vector].get_function_values(data.transport_fields, context.transport_velocity);
+      context.geometry[vector].get_function_values(*data.normal, context.smooth_normal);
+      context.geometry[vector].get_function_gradients(*data.normal, context.smooth_normal_gradient);
+      context.flow[vector].get_function_values(*data.old_fields, context.old_velocity);
+      if (data.transport_fields != data.old_fields)
+        context.flow[vector].get_function_values(*data.transport_fields, context.transport_velocity);
       else
         context.transport_velocity = context.old_velocity;
-      context.flow[vector].get_function_gradients(data.transport_fields, context.old_velocity_gradient);
-      context.geometry[vector].get_function_values(data.old_position, context.old_position);
-      if (data.frame.co_rotating())
+      context.flow[vector].get_function_gradients(*data.transport_fields, context.old_velocity_gradient);
+      context.geometry[vector].get_function_values(*data.old_position, context.old_position);
+      if (data.frame->co_rotating())
         for (unsigned int q = 0; q < context.flow.n_quadrature_points; ++q)
-          context.transport_velocity[q] -= data.frame.carried.value(data.frame_velocity_on_new_surface ?
+          context.transport_velocity[q] -= data.frame->carried.value(data.frame_velocity_on_new_surface ?
                                                                 context.flow.quadrature_point(q) :
                                                                 Point<3>(context.old_position[q]));
       for (const auto &term : terms)
@@ -464,8 +464,8 @@ namespace FluidSurface
 
       context.flow_nodal.reinit(cell);
       context.geometry_nodal.reinit(geometry_cell);
-      context.geometry_nodal[vector].get_function_values(data.normal, context.nodal_smooth_normal);
-      context.geometry_nodal[vector].get_function_values(data.old_position, context.nodal_old_position);
+      context.geometry_nodal[vector].get_function_values(*data.normal, context.nodal_smooth_normal);
+      context.geometry_nodal[vector].get_function_values(*data.old_position, context.nodal_old_position);
       for (unsigned int q = 0; q < context.flow_nodal.n_quadrature_points; ++q)
         {
           context.nodal.reinit(context.flow_nodal, q, context.nodal_smooth_normal[q]);

@@ -283,9 +283,10 @@ namespace FluidSurface
     const double tau             = relaxation_time > 0 ? 10 * relaxation_time : 1.0;
     VectorType   surface = start_surface, fields = start_fields;
     std::string  failure;
+    StepCandidate relaxed;
     for (unsigned int iteration = 0; iteration < iterations && failure.empty(); ++iteration)
       {
-        const SurfaceStep::Result relaxation = step.advance(relaxation_request, tau);
+        const SurfaceStep::Result relaxation = step.advance(relaxation_request, tau, relaxed);
         if (!relaxation.solved)
           {
             failure = relaxation.message;
@@ -308,11 +309,12 @@ namespace FluidSurface
     const ConservationProjection &conservation = step.components().conservation;
     StepRequest                   projection_request = run_request;
     projection_request.solver                        = StepRequest::Solver::fresh_klu;
-    const SurfaceStep::Result projection = step.advance(projection_request, projection_time_step);
+    StepCandidate             projected;
+    const SurfaceStep::Result projection = step.advance(projection_request, projection_time_step, projected);
     if (!projection.solved)
       return projection.message;
     VectorType state(step.dof_handler().locally_owned_dofs(), geometry.get_communicator());
-    state = step.candidate();
+    state = projected.solution;
     step.copy_position_into(accepted.position, state);
     VectorType position(geometry.locally_owned_dofs(), geometry.get_communicator());
     position = accepted.position;

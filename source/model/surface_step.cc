@@ -57,15 +57,21 @@ namespace FluidSurface
 
   struct SurfaceStep::StepUnderWay
   {
+    /// A stage of the step as @p request asks, in @p frame, whose terms are those of @p components.
+    StepUnderWay(const StepRequest &request, const StepFrame &frame, const StepComponents &components, StepSystem &system)
+      : request(request)
+      , frame(frame)
+      , assembly(components, request, system)
+    {}
     const StepRequest &request;
-    const double       tau;   ///< the step
-    const StepStart   &start; ///< its backward-Euler form
-    const StepFrame   &frame; ///< the frame it is solved in
-    const SurfaceGeometry::Measures old_measures; ///< of S^m
-    const SurfaceGeometry::Curvature &old_curvature; ///< of S^m
-    const double       membrane_weight;
-    const StepAssembly assembly;
-    GlobalConstraints  constraints;
+    const StepFrame   &frame;    ///< the frame it is solved in
+    const StepAssembly assembly; ///< its terms
+    double             tau   = 0;       ///< the step (the stage's time, SDIRK2)
+    const StepStart   *start = nullptr; ///< its backward-Euler form
+    SurfaceGeometry::Measures         old_measures;            ///< of S^m
+    const SurfaceGeometry::Curvature *old_curvature = nullptr; ///< of S^m
+    double                            membrane_weight = 0;
+    GlobalConstraints                 constraints;
     /// The curvature of the last surface the step evaluated (S^m, or the last iterate of the geometry): the
     /// modes of the area and volume projection.
     SurfaceGeometry::Curvature evaluated_curvature;
@@ -105,7 +111,6 @@ namespace FluidSurface
   {
     system.setup_system();
     bordered_solver.release_factorization();
-    candidate_solution = system.ghosted_vector();
   }
 
   StepFrame
@@ -148,13 +153,13 @@ namespace FluidSurface
   }
 
   void
-  SurfaceStep::accept_history()
+  SurfaceStep::accept_history(const StepCandidate &candidate)
   {
     corrected_steps.accept();
     membrane_pull.accept();
-    time_scheme->accept(state.solution, system, last_tau);
-    error_estimate.accept(system, last_tau);
-    bordered_solver.turn_kept_factors(candidate_rotation);
+    time_scheme->accept(state.solution, system, candidate.tau);
+    error_estimate.accept(system, candidate.tau);
+    bordered_solver.turn_kept_factors(candidate.mesh_rotation);
   }
 
   void
@@ -186,21 +191,21 @@ namespace FluidSurface
   StepAssemblyData
   SurfaceStep::assembly_data(const StepUnderWay &step, const VectorType &normal) const
   {
-    const double tau = step.start.tau;
+    StepAssemblyData data;
+    data.tau                           = step.start->tau;
+    data.old_position                  = step.start->position;
+    data.old_fields                    = step.start->fields;
+    data.transport_fields              = step.start->transport;
+    data.frame_velocity_on_new_surface = step.start->frame_velocity_on_new_surface;
+    data.normal                        = &normal;
+    data.reference_position            = &state.reference_position;
+    data.frame                         = &step.frame;
     // div_P u = s with s = −(A^m − A₀)/(τ_c A^m) returns any area drift (∫div_P u = dA/dt);
     // τ_c = max(τ, τ_drift) keeps the correction bounded when a rejected step shrinks τ.
-    const double area_rate = -(step.old_measures.area - state.target_area) / (drift_time(tau) * step.old_measures.area);
-    return {tau,
-            step.start.position,
-            step.start.fields,
-            step.start.transport,
-            normal,
-            state.reference_position,
-            step.frame,
-            step.start.frame_velocity_on_new_surface,
-            area_rate,
-            state.target_area / geometry.measure().area,
-            step.membrane_weight};
+    data.area_rate       = -(step.old_measures.area - state.target_area) / (drift_time(data.tau) * step.old_measures.area);
+    data.area_scale      = state.target_area / geometry.measure().area;
+    data.membrane_weight = step.membrane_weight;
+    return data;
   }
 
   void
@@ -214,7 +219,7 @@ namespace FluidSurface
       {
         constraints.columns.push_back(&system.volume_column());
         constraints.rows.push_back(&system.volume_column());
-        constraints.values.push_back(-(step.old_measures.volume - state.target_volume) / drift_time(step.start.tau));
+        constraints.values.push_back(-(step.old_measures.volume - state.target_volume) / drift_time(step.start->tau));
       }
     if (!constraints.rigid_rows)
       return;
@@ -268,7 +273,7 @@ namespace FluidSurface
     const GlobalConstraints &constraints = step.constraints;
     const BorderedSystem     bordered(system.matrix(), constraints.columns, constraints.rows);
     const BorderedSolver::Outcome outcome = bordered_solver.solve(
-      bordered, system, step.start.tau, constraints.values, step.request.solver, solution, same_step);
+      bordered, system, step.start->tau, constraints.values, step.request.solver, solution, same_step);
     result.linear_iterations += outcome.iterations;
     result.factorized = result.factorized || outcome.factorized;
     if (outcome.failure != StepFailure::none)
@@ -296,11 +301,12 @@ namespace FluidSurface
     bool       converged = false;
     // The surface Ỹ_k the step is assembled on; the next one from Ỹ_k and G(Ỹ_k), the solve's new position.
     VectorType             surface = solution.block(0);
+    VectorType             iterate = system.ghosted_vector();
     FixedPointAcceleration acceleration([this](const VectorType &a, const VectorType &b) { return system.position_dot(a, b); });
     for (unsigned int k = 1; k <= iteration.max_iterations && !converged; ++k)
       {
-        candidate_solution = surface;
-        system.copy_new_position_to_geometry(candidate_solution);
+        iterate = surface;
+        system.copy_new_position_to_geometry(iterate);
         {
           TimerSection section(step_timer, "assembly");
           step.evaluated_curvature = geometry.curvature();
@@ -328,27 +334,28 @@ namespace FluidSurface
   }
 
   void
-  SurfaceStep::finish(StepUnderWay &step, VectorType &x, Result &result)
+  SurfaceStep::finish(StepUnderWay &step, VectorType &x, Result &result, StepCandidate &candidate)
   {
     const StepRequest &request = step.request;
     if (error_estimate.enabled() && request.velocity == StepRequest::Velocity::flow)
       result.error_estimate = error_estimate.estimate(system,
                                                       x,
                                                       state.position,
-                                                      step.old_curvature.normal,
+                                                      step.old_curvature->normal,
                                                       step.tau,
                                                       std::sqrt(step.old_measures.area / (4 * numbers::PI)));
-    candidate_solution = x;
+    candidate.solution = system.ghosted_vector();
+    candidate.solution = x;
     {
       TimerSection section(step_timer, "diagnostics");
-      result.dissipation_rate = dissipation_rate(candidate_solution); // of ũ on S^m, that of u on the carried surface
+      result.dissipation_rate = dissipation_rate(candidate.solution); // of ũ on S^m, that of u on the carried surface
     }
     if (step.frame.solved_in_frame())
       {
         system.carry_fields(step.frame.motion, step.tau, x); // out of the carried frame: u = Qũ, Y = carry(Ỹ)
-        candidate_solution = x;
+        candidate.solution = x;
       }
-    system.copy_new_position_to_geometry(candidate_solution);
+    system.copy_new_position_to_geometry(candidate.solution);
     const ConservationProjection &conservation = parts.conservation;
     if (conservation.enabled && request.prescribed_velocity() == nullptr)
       {
@@ -358,20 +365,26 @@ namespace FluidSurface
         result.node_correction                 = conservation.project_area_and_volume(
           geometry, modes, state.target_area, state.target_volume, parts.volume_constraint.enabled);
         VectorType projected = system.owned_vector();
-        projected            = candidate_solution;
+        projected            = candidate.solution;
         system.copy_position_into(geometry.position(), projected);
         if (parts.flow.conserve_momenta && parts.flow.inertia)
           result.momentum_correction =
             conservation.project_momenta(geometry, system.dof_handler(), state.rigid_targets, projected);
-        candidate_solution = projected;
+        candidate.solution = projected;
       }
-    last_tau           = step.tau;
-    candidate_rotation = step.frame.mesh_rotation(step.tau);
-    result.solved      = true;
+    {
+      TimerSection section(step_timer, "curvature and energy");
+      candidate.position       = geometry.position();
+      candidate.curvature      = geometry.curvature();
+      candidate.kinetic_energy = parts.flow.inertia ? kinetic_energy(candidate.solution) : 0.0;
+    }
+    candidate.tau           = step.tau;
+    candidate.mesh_rotation = step.frame.mesh_rotation(step.tau);
+    result.solved           = true;
   }
 
   SurfaceStep::Result
-  SurfaceStep::advance(const StepRequest &request, const double tau)
+  SurfaceStep::advance(const StepRequest &request, const double tau, StepCandidate &candidate)
   {
     Result                    result;
     const MeshRedistribution &redistribution = parts.redistribution;
@@ -391,16 +404,13 @@ namespace FluidSurface
     // The stages of the step (one but for SDIRK2), each a backward-Euler solve in the frame of the step.
     for (unsigned int stage = 0;; ++stage)
       {
-        StepUnderWay step{request,
-                          scheme.stage_time(stage, tau),
-                          *start,
-                          frame,
-                          old_measures,
-                          old_curvature,
-                          membrane_weight,
-                          StepAssembly(parts, request, system),
-                          {},
-                          old_curvature};
+        StepUnderWay step(request, frame, parts, system);
+        step.tau                 = scheme.stage_time(stage, tau);
+        step.start               = &*start;
+        step.old_measures        = old_measures;
+        step.old_curvature       = &old_curvature;
+        step.membrane_weight     = membrane_weight;
+        step.evaluated_curvature = old_curvature;
         // The first solve of an iterated BDF2 step on the extrapolated surface, of second order: one correction
         // from there leaves an O(τ³) or O(τ²) geometry, one from S^m an O(τ) one (doc/scheme.md, "Second order in
         // time").
@@ -425,7 +435,7 @@ namespace FluidSurface
           return result;
         if (stage + 1 == scheme.n_stages())
           {
-            finish(step, solution.block(0), result);
+            finish(step, solution.block(0), result, candidate);
             return result;
           }
         restore_old_geometry();

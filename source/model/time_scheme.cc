@@ -36,7 +36,12 @@ namespace FluidSurface
                        const StepFrame &,
                        const double tau)
   {
-    return {tau, old_position, old_fields, old_fields, false};
+    StepStart start;
+    start.tau       = tau;
+    start.position  = &old_position;
+    start.fields    = &old_fields;
+    start.transport = &old_fields;
+    return start;
   }
 
   StepStart
@@ -131,7 +136,13 @@ namespace FluidSurface
     // named vector: a move assignment would hand start_position the owned layout without its ghosts.
     const VectorType owned_start_position = system.new_position(start_fields);
     start_position                        = owned_start_position;
-    return {tau_hat, start_position, start_fields, lagged_fields, true};
+    StepStart result;
+    result.tau                           = tau_hat;
+    result.position                      = &start_position;
+    result.fields                        = &start_fields;
+    result.transport                     = &lagged_fields;
+    result.frame_velocity_on_new_surface = true;
+    return result;
   }
 
   void
@@ -222,7 +233,12 @@ namespace FluidSurface
       }
     else
       lagged_fields = old_fields;
-    StepStart result{gamma * tau, old_position, old_solution, lagged_fields, true};
+    StepStart result;
+    result.tau                           = gamma * tau;
+    result.position                      = &old_position;
+    result.fields                        = &old_solution;
+    result.transport                     = &lagged_fields;
+    result.frame_velocity_on_new_surface = true;
     if (predictor != GeometryIteration::Predictor::old_surface && previous_step > 0)
       result.predicted = &lagged_fields;
     return result;

@@ -60,7 +60,7 @@ namespace FluidSurface
     time.parse_parameters(prm);
     energy_control = EnergyStepController(time.energy_tolerance());
     model.parse_parameters(prm, time.maximum_step_size());
-    model.set_error_estimation(time.error_control());
+    model.step().set_error_estimation(time.error_control());
     model.set_time_scheme(time);
     diagnostics.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
@@ -84,7 +84,7 @@ namespace FluidSurface
         if (Utilities::MPI::this_mpi_process(communicator) == 0)
           std::filesystem::remove(output.directory() + "error.log");
       }
-    model.set_timer(computing_timer);
+    model.step().set_timer(computing_timer);
     // The timing is written however the run ends (a failed run's timing shows where it spent its time),
     // and the factorization kept across steps is freed.
     struct TimingAtExit
@@ -92,7 +92,7 @@ namespace FluidSurface
       FullModelScene &scene;
       ~TimingAtExit()
       {
-        scene.model.release_factorization();
+        scene.model.step().solver().release_factorization();
         try
           {
             scene.write_timing();
@@ -108,7 +108,7 @@ namespace FluidSurface
       set_up_initial_state();
 
     const StopSignals stop_signals(communicator);
-    StepController    controller(model, time, pcout, output.directory(), communicator, &computing_timer);
+    StepController    controller(model, time, pcout, output.directory(), communicator);
     controller.check_energy(energy_control);
     steps_this_run       = 0;
     last_checkpoint_step = resuming ? time.step_number() : numbers::invalid_unsigned_int;
@@ -210,10 +210,10 @@ namespace FluidSurface
   {
     model.setup();
     pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ"
-          << (model.components().flow.inertia ? "" : " (Stokes limit: + 6 rigid-motion multipliers)") << std::endl;
+          << (model.step().components().flow.inertia ? "" : " (Stokes limit: + 6 rigid-motion multipliers)") << std::endl;
     std::ostringstream report;
     diagnostics.set_reference(diagnostics.evaluate(geometry, model.dof_handler(), model.solution()),
-                              model.components().bending.Be,
+                              model.step().components().bending.Be,
                               report);
     pcout << report.str() << std::flush;
     willmore = geometry.willmore_energy();
@@ -249,9 +249,9 @@ namespace FluidSurface
         throw std::runtime_error(msg.str());
       }
     std::ostringstream report;
-    diagnostics.set_reference(diagnostics.initial_values(), model.components().bending.Be, report);
+    diagnostics.set_reference(diagnostics.initial_values(), model.step().components().bending.Be, report);
     pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ"
-          << (model.components().flow.inertia ? "" : " (Stokes limit: + 6 rigid-motion multipliers)") << '\n'
+          << (model.step().components().flow.inertia ? "" : " (Stokes limit: + 6 rigid-motion multipliers)") << '\n'
           << report.str() << "-- resumed from " << checkpoint.last_slot() << ": step " << time.step_number()
           << ", t = " << time.time() << std::endl;
   }
@@ -305,7 +305,7 @@ namespace FluidSurface
     TimerOutput::Scope        section(computing_timer, "diagnostics");
     const Diagnostics::Values v = diagnostics.evaluate(geometry, model.dof_handler(), model.solution());
     diagnostics.record(v, time.time(), tau);
-    const double bending_energy = model.components().bending.energy(willmore);
+    const double bending_energy = model.step().components().bending.energy(willmore);
     total_energy                = model.total_energy(v.kinetic_energy, willmore);
 
     statistics.add_value("time step", time.step_number());
@@ -345,7 +345,7 @@ namespace FluidSurface
           pcout << std::setprecision(3) << std::scientific << "    E(L2) = " << v.l2_distance << " (axial "
                 << v.l2_distance_axial << ", equatorial " << v.l2_distance_equatorial << ")" << std::defaultfloat
                 << '\n';
-        if (model.components().geometry_iteration.enabled())
+        if (model.step().components().geometry_iteration.enabled())
           pcout << "    geometry iterations " << step.geometry_iterations << ", last node move " << std::setprecision(2)
                 << std::scientific << step.geometry_change << " h" << std::defaultfloat << '\n';
         if (output.report_wall_time())
@@ -359,10 +359,10 @@ namespace FluidSurface
   FullModelScene::check_mesh_quality() const
   {
     const double quality = geometry.measure().mesh_quality;
-    if (quality < model.components().redistribution.mesh_quality_floor)
+    if (quality < model.step().components().redistribution.mesh_quality_floor)
       {
         std::ostringstream msg;
-        msg << "mesh quality " << quality << " fell below the 'mesh quality floor' " << model.components().redistribution.mesh_quality_floor
+        msg << "mesh quality " << quality << " fell below the 'mesh quality floor' " << model.step().components().redistribution.mesh_quality_floor
             << " at step " << time.step_number() << ", t = " << time.time();
         throw RunFailed(msg.str(),
                         "the output up to the previous step, the summary and the last checkpoint are intact; a "
@@ -408,7 +408,7 @@ namespace FluidSurface
           last_checkpoint_step = time.step_number();
         // A resumed run starts without the factorization kept across steps; dropping it here too
         // makes the step after a checkpoint factorize in both, so that they agree bit for bit.
-        model.release_factorization();
+        model.step().solver().release_factorization();
       }
     if (!stop)
       return;
@@ -437,7 +437,7 @@ namespace FluidSurface
     if (steady_state.enabled())
       text << "steady state: " << (steady_state_report.empty() ? "not reached" : steady_state_report) << '\n';
     model.safety_valve().write_summary(text);
-    text << "LU factorizations: " << model.n_factorizations() << '\n';
+    text << "LU factorizations: " << model.step().solver().n_factorizations() << '\n';
     {
       std::ofstream summary(output.directory() + "summary.tmp");
       summary << text.str();
@@ -462,7 +462,7 @@ namespace FluidSurface
         std::ofstream file(output.directory() + "timing");
         file << "# section, calls, wall time [s], share of the run, wall time per accepted step [s]\n"
              << "# run: " << total << " s, " << time.step_number() << " accepted steps, " << time.n_rejected_steps()
-             << " rejected, " << model.n_factorizations() << " LU factorizations\n";
+             << " rejected, " << model.step().solver().n_factorizations() << " LU factorizations\n";
         for (const auto &entry : wall)
           file << '"' << entry.first << "\", " << calls.at(entry.first) << ", " << entry.second << ", "
                << entry.second / total << ", " << entry.second / std::max(1u, time.step_number()) << '\n';
@@ -470,7 +470,7 @@ namespace FluidSurface
     if (output.report_wall_time())
       {
         pcout << "--- wall time per section (" << std::setprecision(4) << total / std::max(1u, time.step_number())
-              << " s per accepted step, " << model.n_factorizations() << " LU factorizations in "
+              << " s per accepted step, " << model.step().solver().n_factorizations() << " LU factorizations in "
               << time.step_number() + time.n_rejected_steps() << " step attempts)\n";
         computing_timer.print_summary();
       }

@@ -228,7 +228,7 @@ namespace FluidSurface
     std::vector<double> sizes;
     if (steps > 0)
       {
-        sizes = model.time_scheme().start_up(tau).steps;
+        sizes = model.step().flow_time_scheme().start_up(tau).steps;
         sizes.insert(sizes.end(), steps - 1, tau);
       }
     TimeStepper map_steps;
@@ -455,7 +455,7 @@ namespace FluidSurface
   void
   StabilityScene::measure_unperturbed_map()
   {
-    const std::string start_up = model.time_scheme().start_up(tau).description;
+    const std::string start_up = model.step().flow_time_scheme().start_up(tau).description;
     pcout << "   " << model.dof_handler().n_dofs() << " unknowns (u, p, κ, y, Y) + γ; the time-" << map_time
           << " map is " << n_steps << " steps of τ = " << tau << (start_up.empty() ? "" : " (" + start_up + ")")
           << std::endl;

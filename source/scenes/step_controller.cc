@@ -15,14 +15,12 @@ namespace FluidSurface
                                  TimeStepper              &time,
                                  const ConditionalOStream &pcout,
                                  const std::string        &output_directory,
-                                 const MPI_Comm            communicator,
-                                 TimerOutput              *timer)
+                                 const MPI_Comm            communicator)
     : model(model)
     , time(time)
     , pcout(pcout)
     , output_directory(output_directory)
     , communicator(communicator)
-    , timer(timer)
   {}
 
   std::optional<StepController::AcceptedStep>
@@ -51,19 +49,14 @@ namespace FluidSurface
     EnergyStepController::Decision decision;
     if (energy_control)
       {
-        {
-          std::optional<TimerOutput::Scope> section;
-          if (timer)
-            section.emplace(*timer, "curvature and energy");
-          const FluidDeformableSurface::Energies candidate = model.candidate_energies();
-          step.willmore                                    = candidate.willmore;
-          step.total_energy                                = candidate.total;
-        }
+        const FluidDeformableSurface::Energies candidate = model.candidate_energies();
+        step.willmore                                    = candidate.willmore;
+        step.total_energy                                = candidate.total;
         decision = energy_control->decide(energy, step.total_energy, step.tau);
       }
     if (decision.verdict == EnergyStepController::Verdict::reject)
       {
-        if (model.start_corrected_steps())
+        if (model.step().start_corrected_steps())
           {
             model.restore_last_state();
             time.repeat_step();
@@ -71,7 +64,7 @@ namespace FluidSurface
             pcout << "    step rejected (" << decision.reason << "); retried at the same τ with the iterated geometry"
                   << std::endl;
           }
-        else if (model.fall_back_to_backward_euler(time.backward_euler_steps_after_rejection()))
+        else if (model.step().fall_back_to_backward_euler(time.backward_euler_steps_after_rejection()))
           {
             model.restore_last_state();
             time.repeat_step();

@@ -73,8 +73,8 @@ namespace FluidSurface
     setup();
 
     /**
-     * Assembles and solves one step of size @p tau on the current surface and moves the geometry to the new
-     * surface. The old state is kept until accept() or restore_last_state().
+     * Assembles and solves one step of size @p tau on the current surface into the candidate and moves the
+     * geometry to the candidate's surface. The old state is kept until accept() or restore_last_state().
      */
     SurfaceStep::Result
     advance(const double tau);
@@ -130,21 +130,6 @@ namespace FluidSurface
     {
       return angular_velocity;
     }
-    /// After a rejected step: with `geometry iteration/apply = after rejection` and a lagged step rejected,
-    /// starts the corrected steps (the retry at the same τ and the next K steps iterate their geometry;
-    /// SurfaceStep::start_corrected_steps()). Returns whether it did.
-    bool
-    start_corrected_steps()
-    {
-      return step.start_corrected_steps();
-    }
-    /// After a rejected BDF2 step: the retry at the same τ and the next @p steps are backward Euler
-    /// (SurfaceStep::fall_back_to_backward_euler()). Returns whether it started them.
-    bool
-    fall_back_to_backward_euler(const unsigned int steps)
-    {
-      return step.fall_back_to_backward_euler(steps);
-    }
 
     /**
      * Replaces the reference surface S₀ of the mesh law `reference` (set by setup() to the initial surface) by
@@ -175,17 +160,11 @@ namespace FluidSurface
      */
     double
     total_energy(const double kinetic_energy, const double willmore_energy) const;
-    /// ½∫|u|² of @p state (default: the current one) on the current surface.
-    double
-    kinetic_energy(const VectorType &state) const
-    {
-      return step.kinetic_energy(state);
-    }
-    /// ½∫|u^m|² of the accepted state.
+    /// ½∫|u^m|² of the accepted state, on the current surface.
     double
     kinetic_energy() const
     {
-      return kinetic_energy(state.solution);
+      return surface_step.kinetic_energy(state.solution);
     }
     /// ½∫|κ|² and F of a state.
     struct Energies
@@ -193,24 +172,12 @@ namespace FluidSurface
       double willmore = 0;
       double total    = 0;
     };
-    /// The energies of the result of the last advance(), before accept(), on its surface.
+    /// The energies of the result of the last advance(), before accept(), on its surface (StepCandidate).
     Energies
     candidate_energies() const
     {
-      const double willmore = geometry.willmore_energy();
-      return {willmore, total_energy(kinetic_energy(step.candidate()), willmore)};
-    }
-    /// The parsed components of the step (flow, bending, mesh law, constraints, geometry iteration).
-    const StepComponents &
-    components() const
-    {
-      return step.components();
-    }
-    /// Whether the steps estimate their local error (set by the scene for `time stepping/error tolerance` > 0).
-    void
-    set_error_estimation(const bool on)
-    {
-      step.set_error_estimation(on);
+      const double willmore = candidate.curvature.willmore_energy;
+      return {willmore, total_energy(candidate.kinetic_energy, willmore)};
     }
     /**
      * The time scheme and frame of the flow steps (`time stepping/scheme`, `frame` of @p time), checked against
@@ -219,18 +186,27 @@ namespace FluidSurface
      */
     void
     set_time_scheme(const TimeStepper &time);
-    /// The time scheme of the flow steps and its rules.
-    const TimeScheme &
-    time_scheme() const
-    {
-      return step.time_scheme_of_flow_steps();
-    }
 
-    /// The DoFs of (u, p, κ, y, Y).
+    /**
+     * The step that advances the state: its components (the parsed subsections), its DoFs of (u, p, κ, y, Y),
+     * its solver (factorizations), its time scheme and its controls (error estimation, timer, corrected steps,
+     * backward-Euler fallback).
+     */
+    SurfaceStep &
+    step()
+    {
+      return surface_step;
+    }
+    const SurfaceStep &
+    step() const
+    {
+      return surface_step;
+    }
+    /// The DoFs of (u, p, κ, y, Y) of the state (those of the step).
     const dealii::DoFHandler<2, 3> &
     dof_handler() const
     {
-      return step.dof_handler();
+      return surface_step.dof_handler();
     }
     /// u, p, κ, y, Y of the current state, ghosted.
     const VectorType &
@@ -242,24 +218,6 @@ namespace FluidSurface
     static constexpr unsigned int velocity_component = DofLayout::velocity_component;
     static constexpr unsigned int position_component = DofLayout::new_position_component;
 
-    /// Sections "assembly", "factorization", "linear solve", "diagnostics" of advance() go to @p timer.
-    void
-    set_timer(dealii::TimerOutput &timer)
-    {
-      step.set_timer(timer);
-    }
-    /// Number of LU factorizations so far.
-    unsigned int
-    n_factorizations() const
-    {
-      return step.solver().n_factorizations();
-    }
-    /// Frees the kept LU factorization (MUMPS) while the rest of the program is still alive.
-    void
-    release_factorization()
-    {
-      step.solver().release_factorization();
-    }
 
     /// Adds u, |u| and p to a DataOut.
     void
@@ -288,7 +246,9 @@ namespace FluidSurface
 
     SurfaceGeometry         &geometry;
     SurfaceState             state;
-    SurfaceStep              step;
+    SurfaceStep              surface_step;
+    /// The result of the last advance(), until accept() or restore_last_state().
+    StepCandidate            candidate;
     SurfaceReparametrization reparametrization;
     /// What advance() asks of the step: the flow (or the prescribed velocity) with the parsed mesh law.
     StepRequest run_request;

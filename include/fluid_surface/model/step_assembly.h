@@ -20,24 +20,24 @@ namespace FluidSurface
    */
   struct StepAssemblyData
   {
-    double             tau;                ///< τ of the backward-Euler form (BDF2: τ/α₀)
-    const VectorType  &old_position;       ///< X̂: X^m, or BDF2's start (geometry numbering, ghosted)
-    const VectorType  &old_fields;         ///< û: the fields whose u is that of the inertia (flow numbering)
-    const VectorType  &transport_fields;   ///< the fields whose u the convection lags (u^m, or BDF2's u*)
-    const VectorType  &normal;             ///< ñ of the assembly (the geometry's, or a GeometryIteration iterate's)
-    const VectorType  &reference_position; ///< S₀ of law reference in the flow numbering
+    double            tau          = 0;       ///< τ of the backward-Euler form (BDF2: τ/α₀)
+    const VectorType *old_position = nullptr; ///< X̂: X^m, or BDF2's start (geometry numbering, ghosted)
+    const VectorType *old_fields   = nullptr; ///< û: the fields whose u is that of the inertia (flow numbering)
+    const VectorType *transport_fields = nullptr; ///< the fields whose u the convection lags (u^m, or BDF2's u*)
+    const VectorType *normal = nullptr; ///< ñ of the assembly (the geometry's, or a GeometryIteration iterate's)
+    const VectorType *reference_position = nullptr; ///< S₀ of law reference in the flow numbering
     /**
      * The frame of the step; its `carried` motion R is the one the mesh follows. Co-rotating: the convection is
      * transported by u − R and the mesh moves relative to the frame, ∇_{u* − R} ũ − (1/τ)(G(Ỹ − X̂), v), instead
      * of ∇_{u*} ũ − (1/τ)(G(Ỹ − X̂ + τR), v): the two differ by ∇_R(ũ − u*), of order τ mΩ ∂_t u, which a frame
      * that turns at Ω must not carry.
      */
-    const StepFrame &frame;
+    const StepFrame *frame = nullptr;
     /// Law reference: the frame velocity R taken on the assembly's surface (BDF2: the new level) instead of X̂.
-    bool frame_velocity_on_new_surface;
-    double area_rate;       ///< s = −(A^m − A₀)/(τ_c A^m) of the continuity row
-    double area_scale;      ///< A₀/A of the membrane energy
-    double membrane_weight; ///< the weight of the membrane energy (MeshRedistribution::membrane_weight())
+    bool   frame_velocity_on_new_surface = false;
+    double area_rate                     = 0; ///< s = −(A^m − A₀)/(τ_c A^m) of the continuity row
+    double area_scale                    = 1; ///< A₀/A of the membrane energy
+    double membrane_weight = 0; ///< the weight of the membrane energy (MeshRedistribution::membrane_weight())
   };
 
   /**

@@ -12,6 +12,7 @@
 #include <fluid_surface/model/local_error_estimate.h>
 #include <fluid_surface/model/membrane_pull.h>
 #include <fluid_surface/model/rigid_motion.h>
+#include <fluid_surface/model/step_candidate.h>
 #include <fluid_surface/model/step_components.h>
 #include <fluid_surface/model/step_failure.h>
 #include <fluid_surface/model/step_frame.h>
@@ -82,23 +83,19 @@ namespace FluidSurface
     setup_system();
 
     /**
-     * Assembles and solves one step of size @p tau as @p request asks, on the surface X^m of the state, and
-     * moves the geometry to the new surface; the solution is candidate() until the caller accepts it.
+     * Assembles and solves one step of size @p tau as @p request asks, on the surface X^m of the state, into
+     * @p candidate (its fields, its surface and the curvature and kinetic energy there), and moves the geometry
+     * to that surface. The caller accepts the candidate (accept_history(), then the state) or moves the geometry
+     * back.
      */
     Result
-    advance(const StepRequest &request, const double tau);
+    advance(const StepRequest &request, const double tau, StepCandidate &candidate);
 
     /// The parsed components of the step.
     const StepComponents &
     components() const
     {
       return parts;
-    }
-    /// The solution of the last advance(): u, p, κ, y, Y (flow numbering), ghosted.
-    const VectorType &
-    candidate() const
-    {
-      return candidate_solution;
     }
     /// The DoFs of (u, p, κ, y, Y).
     const dealii::DoFHandler<2, 3> &
@@ -157,7 +154,7 @@ namespace FluidSurface
     set_time_scheme(const std::string &name, const FlowStepFrame frame);
     /// The time scheme of the flow steps: its rules (TimeScheme::name(), step_ratio_limit(), start_up(), …).
     const TimeScheme &
-    time_scheme_of_flow_steps() const
+    flow_time_scheme() const
     {
       return *time_scheme;
     }
@@ -181,10 +178,10 @@ namespace FluidSurface
     {
       return steps > 0 && time_scheme->fall_back_to_backward_euler(steps);
     }
-    /// The step was accepted (called before the state moves on): the histories of the time scheme, the error
-    /// estimate, the corrected steps and the membrane pull move on.
+    /// The step @p candidate was accepted (called before the state moves on): the histories of the time
+    /// scheme, the error estimate, the corrected steps, the membrane pull and the kept factors move on.
     void
-    accept_history();
+    accept_history(const StepCandidate &candidate);
     /// From now on the membrane energy acts with its full weight (`mesh redistribution/anchor time`).
     void
     pull_fully()
@@ -244,9 +241,10 @@ namespace FluidSurface
     /// stop moving (GeometryIteration). Returns whether it converged (else @p result says why).
     bool
     iterate_geometry(StepUnderWay &step, BorderedSystem::BlockVector &solution, Result &result);
-    /// Out of the carried frame, onto the geometry, the error estimate and the conservation projection.
+    /// Out of the carried frame, onto the geometry, the error estimate and the conservation projection, into
+    /// @p candidate.
     void
-    finish(StepUnderWay &step, VectorType &solution, Result &result);
+    finish(StepUnderWay &step, VectorType &solution, Result &result, StepCandidate &candidate);
     /// D = (2/Re)‖σ(u)‖² of @p flow_vector on the current surface (EnergyFunctionals::dissipation_rate).
     double
     dissipation_rate(const VectorType &flow_vector) const;
@@ -273,12 +271,6 @@ namespace FluidSurface
     LocalErrorEstimate          error_estimate;
     CorrectedSteps              corrected_steps;
     MembranePull                membrane_pull;
-    /// The ghosted result of the last advance().
-    VectorType candidate_solution;
-    /// τ of the last advance().
-    double last_tau = 0;
-    /// The rotation of the mesh by the candidate step's frame (co-rotating steps; else the identity).
-    dealii::Tensor<2, 3> candidate_rotation = dealii::unit_symmetric_tensor<3>();
     dealii::TimerOutput *step_timer = nullptr;
   };
 } // namespace FluidSurface

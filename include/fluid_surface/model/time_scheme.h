@@ -23,12 +23,12 @@ namespace FluidSurface
    */
   struct StepStart
   {
-    double            tau;       ///< τ̂
-    const VectorType &position;  ///< X̂ (geometry numbering, ghosted)
-    const VectorType &fields;    ///< x̂ (flow numbering): û is the u of the inertia
-    const VectorType &transport; ///< the lagged fields of the convection (flow numbering)
+    double            tau       = 0;       ///< τ̂
+    const VectorType *position  = nullptr; ///< X̂ (geometry numbering, ghosted)
+    const VectorType *fields    = nullptr; ///< x̂ (flow numbering): û is the u of the inertia
+    const VectorType *transport = nullptr; ///< the lagged fields of the convection (flow numbering)
     /// Law reference: the frame velocity R is taken at the new time level (second order) instead of at X̂.
-    bool frame_velocity_on_new_surface;
+    bool frame_velocity_on_new_surface = false;
     /// Fields whose Y is the new position predicted from the history in the frame of the step
     /// (GeometryIteration::Predictor); nullptr: no prediction (S^m).
     const VectorType *predicted = nullptr;

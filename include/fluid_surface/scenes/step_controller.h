@@ -3,7 +3,6 @@
 #define fluid_surface_scenes_step_controller_h
 
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/timer.h>
 
 #include <fluid_surface/model/fluid_deformable_surface.h>
 #include <fluid_surface/time_stepping/energy_step_controller.h>
@@ -37,15 +36,13 @@ namespace FluidSurface
 
     /**
      * The steps of @p model with the sizes of @p time, printing to @p pcout; a solver's report of a failure goes
-     * to `error.log` in @p output_directory (rank 0 of @p communicator), and the time of the energies of a
-     * candidate to section "curvature and energy" of @p timer, if given.
+     * to `error.log` in @p output_directory (rank 0 of @p communicator).
      */
     StepController(FluidDeformableSurface           &model,
                    TimeStepper                      &time,
                    const dealii::ConditionalOStream &pcout,
                    const std::string                &output_directory,
-                   const MPI_Comm                    communicator,
-                   dealii::TimerOutput              *timer = nullptr);
+                   const MPI_Comm                    communicator);
 
     /// From now on every solved step passes the energy check @p energy_check (scene full; kept by reference).
     void
@@ -83,7 +80,6 @@ namespace FluidSurface
     const dealii::ConditionalOStream   &pcout;
     std::string                         output_directory;
     MPI_Comm                            communicator;
-    dealii::TimerOutput                *timer;
     EnergyStepController               *energy_control = nullptr; ///< the energy check (none: nullptr)
   };
 } // namespace FluidSurface
