@@ -349,7 +349,8 @@ namespace FluidSurface
           pcout << "    geometry iterations " << step.geometry_iterations << ", last node move " << std::setprecision(2)
                 << std::scientific << step.geometry_change << " h" << std::defaultfloat << '\n';
         if (output.report_wall_time())
-          pcout << "    " << std::setprecision(3) << per_step << " s/step, ETA " << static_cast<long>(eta) << " s\n";
+          pcout << "    " << std::setprecision(3) << per_step << " s/step, ETA " << static_cast<long>(eta) << " s to t = "
+                << time.final_time() << (steady_state.enabled() ? " (a steady state, which cannot be foreseen, ends it earlier)\n" : "\n");
         pcout << std::flush;
       }
     return v;
