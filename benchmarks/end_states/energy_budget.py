@@ -5,7 +5,11 @@
     /usr/bin/python3 benchmarks/end_states/energy_budget.py RUN_DIRECTORY [...]   # one CSV row per run
 
 Columns: the run, its end time, F(0), F(end), the largest rise of B over any interval, max_{s<t} (B(t) − B(s)),
-relative to |F(0)| and per unit time (the rise over the time it took), and the number of steps with B rising."""
+relative to |F(0)| and per unit time (the rise over the time it took), and the number of steps with B rising.
+Then the per-step law of the program's summary (`steps breaking the energy law`, time stepping/energy law tolerance):
+r_m = F^{m+1} − F^m + τD^{m+1} with the step's own D against 2τ|D^{m+1} − D^m| + ε_L τ|F^m| (ε_L = 1e-6 unless
+--law-tolerance is given): the steps above it, those after t = 1.5 (past the relaxation of the map's spins), and the
+largest excess r_m − bound."""
 import os
 import sys
 
@@ -28,10 +32,27 @@ def budget(path):
             low, low_time = bi, ti
     rising = sum(1 for i in range(1, len(b)) if b[i] > b[i - 1])
     rate = rise / rise_time if rise_time > 0 else 0.0
-    return t[-1], f[0], f[-1], rise / abs(f[0]), rate / abs(f[0]), rising
+    tau = c["tau"]
+    breaking, late, excess = 0, 0, 0.0
+    for i in range(1, len(t)):
+        law = f[i] - f[i - 1] + tau[i] * d[i]
+        bound = 2 * tau[i] * abs(d[i] - d[i - 1]) + max(LAW_TOLERANCE * tau[i], 1e-11) * abs(f[i - 1])
+        if law > bound:
+            breaking += 1
+            late += t[i] > 1.5
+            excess = max(excess, law - bound)
+    return t[-1], f[0], f[-1], rise / abs(f[0]), rate / abs(f[0]), rising, breaking, late, excess
 
 
-print("run,end time,F(0),F(end),max rise of F+int D (rel.),its rate per unit time (rel.),steps with F+int D rising")
-for path in sys.argv[1:]:
-    end, f0, f1, rise, rate, rising = budget(path)
-    print(f"{os.path.basename(os.path.normpath(path))},{end:.4f},{f0:.6f},{f1:.6f},{rise:.2e},{rate:.2e},{rising}")
+arguments = sys.argv[1:]
+LAW_TOLERANCE = 1e-6
+if "--law-tolerance" in arguments:
+    k = arguments.index("--law-tolerance")
+    LAW_TOLERANCE = float(arguments[k + 1])
+    del arguments[k:k + 2]
+print("run,end time,F(0),F(end),max rise of F+int D (rel.),its rate per unit time (rel.),steps with F+int D rising,"
+      "steps breaking the law,of them after t = 1.5,largest excess over the bound")
+for path in arguments:
+    end, f0, f1, rise, rate, rising, breaking, late, excess = budget(path)
+    print(f"{os.path.basename(os.path.normpath(path))},{end:.4f},{f0:.6f},{f1:.6f},{rise:.2e},{rate:.2e},{rising},"
+          f"{breaking},{late},{excess:.2e}")

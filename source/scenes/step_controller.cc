@@ -52,7 +52,7 @@ namespace FluidSurface
         const FluidDeformableSurface::Energies candidate = model.candidate_energies();
         step.willmore                                    = candidate.willmore;
         step.total_energy                                = candidate.total;
-        decision = energy_control->decide(energy, step.total_energy, step.tau);
+        decision = energy_control->decide(energy, step.total_energy, step.tau, step.result.dissipation_rate);
       }
     if (decision.verdict == EnergyStepController::Verdict::reject)
       {

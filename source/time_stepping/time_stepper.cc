@@ -116,6 +116,14 @@ namespace FluidSurface
                       "ε_F ≥ 0: a step is rejected when F(t+τ) > F(t) + (ε_F·τ + 10⁻⁹)·|F(t)|, i.e. when the total "
                       "energy rises faster than the relative rate ε_F (a rate, so that it does not shrink with τ: the "
                       "space discretization is not exactly energy-consistent, see doc/scheme.md).");
+    prm.declare_entry("energy law tolerance",
+                      "1e-6",
+                      RealRange::at_least(0),
+                      "ε_L ≥ 0: a step breaks the energy law when B = F + ∫D rises in it by more than the error of its "
+                      "∫D and ε_L·τ·|F(t)|, i.e. when F(t+τ) − F(t) + τD > 2τ|D − D_prev| + ε_L τ|F(t)| with D the "
+                      "dissipation rate of the step's own velocity and D_prev the last step's. Such steps are counted in the summary (`steps breaking the energy law`), not "
+                      "rejected (doc/scheme.md, \"The discrete energy law\"). The default is the relative rate below "
+                      "which `steady state` calls F constant.");
     prm.leave_subsection();
   }
 
@@ -135,6 +143,7 @@ namespace FluidSurface
     shrink                    = prm.get_double("shrink factor");
     easy_steps                = prm.get_integer("easy steps before growth");
     relative_energy_tolerance = prm.get_double("energy tolerance");
+    relative_energy_law_tolerance = prm.get_double("energy law tolerance");
     error_tolerance           = prm.get_double("error tolerance");
     scheme_name = prm.get("scheme");
     frame_kind  = prm.get("frame") == "Tisserand" ? FlowStepFrame::tisserand : FlowStepFrame::lab;

@@ -44,8 +44,9 @@ namespace FluidSurface
       std::optional<double> step_size;
     };
 
-    /// A controller for the relative energy rise rate @p energy_tolerance ε_F.
-    explicit EnergyStepController(const double energy_tolerance = 0);
+    /// A controller for the relative energy rise rate @p energy_tolerance ε_F that counts the steps on which
+    /// B = F + ∫D rises faster than the relative rate @p energy_law_tolerance ε_L.
+    explicit EnergyStepController(const double energy_tolerance = 0, const double energy_law_tolerance = 0);
 
     /**
      * Whether an energy change from @p old_energy to @p new_energy in a step
@@ -55,11 +56,13 @@ namespace FluidSurface
     acceptable(const double old_energy, const double new_energy, const double tau) const;
 
     /**
-     * Judges a solved step from @p old_energy to @p new_energy of size @p tau
-     * and updates the counters; a rejected step is retried by the caller.
+     * Judges a solved step from @p old_energy to @p new_energy of size @p tau, whose own velocity dissipates at
+     * the rate @p dissipation D, and updates the counters; a rejected step is retried by the caller. An accepted
+     * step with F(t+τ) − F(t) + τD > 2τ|D − D_prev| + ε_L τ|F(t)| (D_prev: the last accepted step's; the first term
+     * bounds the error of τD as the step's ∫D) is counted as breaking the energy law.
      */
     Decision
-    decide(const double old_energy, const double new_energy, const double tau);
+    decide(const double old_energy, const double new_energy, const double tau, const double dissipation);
 
     /// The rejected step is retried with the same τ by another scheme: its rise is not evidence of a rise that
     /// does not fall with τ (decide() compares the retry's rise rate with the rejected one's only after τ shrank).
@@ -82,6 +85,7 @@ namespace FluidSurface
 
   private:
     double energy_tolerance;
+    double energy_law_tolerance;
 
     /// rise/τ of the last rejected step (0 after an accepted one).
     double previous_rate = 0;
@@ -92,6 +96,11 @@ namespace FluidSurface
     /// Accepted steps on which F rose above its rounding, and their largest relative rate rise/(τ|F|).
     unsigned int n_rising_steps = 0;
     double       max_rise_rate  = 0;
+    /// Accepted steps that broke the energy law, and the largest relative rise rate of B, (ΔF + τD)/(τ|F|).
+    unsigned int n_law_breaking_steps = 0;
+    double       max_law_rise_rate    = 0;
+    /// D of the last accepted step (of the initial state: 0).
+    double last_dissipation = 0;
   };
 } // namespace FluidSurface
 

@@ -99,6 +99,12 @@ namespace FluidSurface
     {
       return relative_energy_tolerance;
     }
+    /// ε_L of `energy law tolerance`: the largest relative rate at which B = F + ∫D may rise unnoticed.
+    double
+    energy_law_tolerance() const
+    {
+      return relative_energy_law_tolerance;
+    }
 
     /**
      * Advances time by the τ just used. With error control (error_control()) and an @p error estimate e ≥ 0 of
@@ -227,6 +233,7 @@ namespace FluidSurface
     double       shrink;
     unsigned int easy_steps;
     double       relative_energy_tolerance;
+    double       relative_energy_law_tolerance = 1e-6;
     double       error_tolerance = 0; ///< ε_t; 0: no error control
     unsigned int fallback_steps  = 0; ///< K of `backward Euler steps after rejection`
     std::string   scheme_name = "backward Euler";   ///< `scheme`
