@@ -65,6 +65,15 @@ namespace FluidSurface
                       "and are then held where they are, instead of creeping along the conformal distribution (which "
                       "feeds energy into a rotating steady state); later deformations pull towards that mesh, not "
                       "the initial one (doc/scheme.md). −1: never.");
+    prm.declare_entry("anchor non-rigid energy",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "ε_a, 0 ≤ ε_a ≤ 1, of law reference: the mesh law is also anchored (as at `anchor time`) at "
+                      "the first accepted step whose non-rigid kinetic energy F_kin − ½Ω·L is at most ε_a|F|, i.e. "
+                      "once the initial transformation is over and the body rotates rigidly. With the membrane "
+                      "energy relative to the initial mesh, a tangential mode of the nodes grows in a rigidly "
+                      "spinning body and feeds energy in; anchored at the current mesh, the energy holds the nodes "
+                      "(doc/scheme.md, \"The discrete energy law\"). Whichever of the two comes first anchors. 0: off.");
     prm.declare_entry("lumped",
                       "true",
                       Patterns::Bool(),
@@ -110,6 +119,7 @@ namespace FluidSurface
     pull_onset_quality  = prm.get_double("pull onset quality");
     full_pull_quality   = prm.get_double("full pull quality");
     anchor_time         = prm.get_double("anchor time");
+    anchor_non_rigid_energy = prm.get_double("anchor non-rigid energy");
     lumped              = prm.get_bool("lumped");
     relaxation_time     = prm.get_double("relaxation time");
     follow_rigid_motion = prm.get_bool("follow rigid motion");
@@ -132,6 +142,9 @@ namespace FluidSurface
     if (anchor_time >= 0 && law != Law::reference)
       throw_invalid_entry("mesh redistribution/anchor time", anchor_text,
                           "−1 unless law = reference (only its membrane energy has a reference surface)");
+    if (anchor_non_rigid_energy > 0 && law != Law::reference)
+      throw_invalid_entry("mesh redistribution/anchor non-rigid energy", std::to_string(anchor_non_rigid_energy),
+                          "0 unless law = reference (only its membrane energy has a reference surface)");
     if (anchor_time < 0 && anchor_time != -1)
       throw_invalid_entry("mesh redistribution/anchor time", anchor_text, "−1 or a time ≥ 0");
     if (law == Law::reference && !lumped)

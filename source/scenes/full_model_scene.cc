@@ -161,6 +161,7 @@ namespace FluidSurface
     const SurfaceReparametrization::Jumps jumps = reparametrize_if_due();
     const Diagnostics::Values    values = record_step(step->tau, step->result, jumps);
     check_mesh_quality();
+    anchor_if_rigid(values);
     const bool steady = steady_state.reached(
       {time.time(), total_energy, {values.eigenvalues[0], values.eigenvalues[1], values.eigenvalues[2]}},
       kinetic_energy_excess(values));
@@ -260,6 +261,27 @@ namespace FluidSurface
   FullModelScene::kinetic_energy_excess(const Diagnostics::Values &v)
   {
     return v.kinetic_energy - v.angular_momentum.norm_square() / (2 * v.eigenvalues[2]);
+  }
+
+  void
+  FullModelScene::anchor_if_rigid(const Diagnostics::Values &v)
+  {
+    const double epsilon   = model.step().components().redistribution.anchor_non_rigid_energy;
+    const double non_rigid = (1 - v.rigid_fraction) * v.kinetic_energy; // F_kin − ½Ω·L
+    if (epsilon == 0 || model.is_anchored())
+      return;
+    // Only once the flow has left a rigid start and come back to a rigid rotation: a run that starts rigid has its
+    // transformation still ahead.
+    if (non_rigid > epsilon * std::abs(total_energy))
+      {
+        flow_was_non_rigid = true;
+        return;
+      }
+    if (!flow_was_non_rigid)
+      return;
+    model.anchor();
+    pcout << "    mesh law anchored at t = " << time.time() << ": the body rotates rigidly (non-rigid kinetic energy "
+          << std::setprecision(3) << non_rigid << " ≤ 'anchor non-rigid energy' · |F|)" << std::endl;
   }
 
   SurfaceReparametrization::Jumps

@@ -96,6 +96,12 @@ namespace FluidSurface
     /// Anchors the mesh law now (what `anchor time` does): S₀ becomes the accepted surface, with full weight.
     void
     anchor();
+    /// Whether the mesh law is anchored.
+    bool
+    is_anchored() const
+    {
+      return anchored;
+    }
     /// Undoes the last advance() (geometry and fields).
     void
     restore_last_state();

@@ -143,6 +143,8 @@ namespace FluidSurface
     double pull_onset_quality{};  ///< q₀: the membrane energy acts below this mesh quality
     double full_pull_quality{};   ///< q₁: … and with its full weight below this one
     double anchor_time{};         ///< t_a: S₀ becomes the surface of that time, with full weight (−1: never)
+    /// ε_a: the law is also anchored once the non-rigid kinetic energy is at most ε_a|F| (0: never).
+    double anchor_non_rigid_energy = 0;
     bool   lumped{};              ///< (·,·)_h by the nodal quadrature
     double relaxation_time{};     ///< T_r of the tangential damping (0: plain BGN)
     bool   follow_rigid_motion{}; ///< the damping relaxes towards X^m + τR instead of X^m

@@ -89,6 +89,10 @@ namespace FluidSurface
     /// K − |L|²/(2λ₃) of @p v: zero only for a rigid rotation about the axis of largest inertia.
     static double
     kinetic_energy_excess(const Diagnostics::Values &v);
+    /// Anchors the mesh law once the flow of @p v, after having been non-rigid, rotates rigidly (`mesh
+    /// redistribution/anchor non-rigid energy`).
+    void
+    anchor_if_rigid(const Diagnostics::Values &v);
     /// Throws RunFailed when the mesh quality fell below `mesh quality floor`.
     void
     check_mesh_quality() const;
@@ -146,6 +150,8 @@ namespace FluidSurface
     double       willmore     = 0;             ///< ½∫H² of the accepted state
     double       wall_time_before_restart = 0; ///< wall time of the runs before the checkpoint resumed from
     unsigned int steps_this_run           = 0;
+    /// The flow has been non-rigid (above `anchor non-rigid energy`) since the start of this run.
+    bool flow_was_non_rigid = false;
     unsigned int last_checkpoint_step     = 0; ///< the step of the last checkpoint written or resumed from
   };
 } // namespace FluidSurface
