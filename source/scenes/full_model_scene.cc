@@ -239,6 +239,7 @@ namespace FluidSurface
     energy_control.load(data);
     steady_state.load(data);
     wall_time_before_restart = data.get_double("simulation/wall time");
+    flow_was_non_rigid       = data.has("simulation/flow was non-rigid");
     willmore                 = geometry.willmore_energy();
     // The restored fields must reproduce the energy recorded with them (to rounding: the rank count may differ).
     const double energy = model.total_energy(model.kinetic_energy(), willmore);
@@ -280,7 +281,8 @@ namespace FluidSurface
     if (!flow_was_non_rigid)
       return;
     model.anchor();
-    pcout << "    mesh law anchored at t = " << time.time() << ": the body rotates rigidly (non-rigid kinetic energy "
+    pcout << "    mesh law anchored at t = " << std::setprecision(6) << time.time()
+          << ": the body rotates rigidly (non-rigid kinetic energy "
           << std::setprecision(3) << non_rigid << " ≤ 'anchor non-rigid energy' · |F|)" << std::endl;
   }
 
@@ -410,6 +412,8 @@ namespace FluidSurface
     energy_control.save(data);
     steady_state.save(data);
     data.set("simulation/wall time", elapsed_wall_time());
+    if (flow_was_non_rigid)
+      data.set("simulation/flow was non-rigid", 1u);
     model.save(data);
     time.save(data);
     diagnostics.save(data);

@@ -150,7 +150,8 @@ namespace FluidSurface
     double       willmore     = 0;             ///< ½∫H² of the accepted state
     double       wall_time_before_restart = 0; ///< wall time of the runs before the checkpoint resumed from
     unsigned int steps_this_run           = 0;
-    /// The flow has been non-rigid (above `anchor non-rigid energy`) since the start of this run.
+    /// The flow has been non-rigid (above `anchor non-rigid energy`) since the start (checkpoint key
+    /// `simulation/flow was non-rigid`).
     bool flow_was_non_rigid = false;
     unsigned int last_checkpoint_step     = 0; ///< the step of the last checkpoint written or resumed from
   };
