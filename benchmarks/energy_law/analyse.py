@@ -4,6 +4,8 @@
 import sys, os
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "phase3"))
 import statistics_columns
+
+import probe_terms
 run, logfile = sys.argv[1], sys.argv[2]
 t0, t1 = float(sys.argv[3]), float(sys.argv[4])
 steps = "--steps" in sys.argv
@@ -20,27 +22,10 @@ for i, r in enumerate(rows):
     j = i + 1
     if not (t0 < t[j] <= t1 + 1e-12):
         continue
-    tau, th, K0, W0, K1, W1, K2, W2, K3 = r[1:10]
-    D, Pb, Ip, s, flux, Mk, Ku, Kh, Kd, gam, vval = r[10:21]
-    mu, ru = r[21:27], r[27:33]
+    mu = r[21:27]
     tm, nm = r[53], r[54]
-    musum = sum(a * b for a, b in zip(mu, ru))
-    C = -(Mk + D - s * Ip + gam * flux - Pb + musum)
-    v = {}
-    v["dF"] = (K3 + W2) - (K0 + W0)
+    v = probe_terms.terms(r)
     assert abs(v["dF"] - (F[j] - F[j - 1])) < 1e-7, (t[j], v["dF"], F[j] - F[j - 1])
-    v["-tauD"] = -tau * D
-    v["mu"] = -tau * musum + tau * s * Ip - tau * gam * flux
-    v["bend"] = (W1 - W0) + tau * Pb
-    v["kin"] = (K1 - K0) - tau * (Mk + C)
-    v["kgeo"] = (K1 - K0) - (Ku - Kh)
-    v["kdiss"] = -Kd * tau / th
-    v["kconv"] = -tau * C
-    v["kbdf"] = (Ku - Kh) * (1 - tau / th)
-    v["av"] = (K2 + W2) - (K1 + W1); v["avK"] = K2 - K1; v["avW"] = W2 - W1
-    v["mom"] = K3 - K2
-    v["mu+mom+kin"] = v["mu"] + v["mom"] + v["kin"]
-    v["dB"] = v["dF"] - v["-tauD"]
     chk = v["-tauD"] + v["mu"] + v["bend"] + v["kin"] + v["av"] + v["mom"] - v["dF"]
     assert abs(chk) < 1e-6 * max(1, abs(v["mu"])), chk
     for k in keys: S[k] += v[k]

@@ -20,6 +20,8 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "phase3"))
 import statistics_columns  # noqa: E402
 
+import probe_terms  # noqa: E402
+
 run, logfile = sys.argv[1], sys.argv[2]
 args = [a for a in sys.argv[3:] if not a.startswith("--")]
 t0, t1 = (float(args[0]), float(args[1])) if len(args) >= 2 else (-1e9, 1e9)
@@ -37,34 +39,14 @@ if per_step:
     print("t tau " + " ".join(keys) + " |mu| mesh_quality")
 for i in range(n):
     r = rows[i]
-    tau, th, K0, W0, K1, W1, K2, W2, K3 = r[1:10]
-    D, Pb, Ip, s, flux, Mk, Ku, Kh, Kd, gam, vval = r[10:21]
+    tau = r[1]
     mu = r[21:27]
-    ru = r[27:33]
     j = i + 1 + off
     ti = t[j]
     if not (t0 < ti <= t1 + 1e-12):
         continue
-    musum = sum(m * x for m, x in zip(mu, ru))
-    C = -(Mk + D - s * Ip + gam * flux - Pb + musum)
-    v = {}
-    v["dF"] = (K3 + W2) - (K0 + W0)
+    v = probe_terms.terms(r)
     v["dFstat"] = F[j] - F[j - 1]
-    v["-tauD"] = -tau * D
-    v["solve"] = (K1 + W1) - (K0 + W0)
-    v["av"] = (K2 + W2) - (K1 + W1)
-    v["mom"] = K3 - K2
-    v["cw_p"] = tau * s * Ip
-    v["cw_g"] = -tau * gam * flux
-    v["cw_mu"] = -tau * musum
-    v["cwork"] = v["cw_p"] + v["cw_g"] + v["cw_mu"]
-    v["bend"] = (W1 - W0) + tau * Pb
-    v["kin"] = (K1 - K0) - tau * (Mk + C)
-    v["kgeo"] = (K1 - K0) - (Ku - Kh)
-    v["kdiss"] = -Kd * tau / th
-    v["kconv"] = -tau * C
-    v["kbdf"] = (Ku - Kh) * (1 - tau / th)
-    # with τ̂ ≠ τ (BDF2) kin − (kgeo + kdiss + kconv) = (Ku − Kh)(1 − τ/τ̂)
     for k in keys:
         sums[k] += v[k]
     if per_step:
