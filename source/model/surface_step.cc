@@ -258,13 +258,23 @@ namespace FluidSurface
   }
 
   void
-  SurfaceStep::set_constraint_values(const std::array<double, 6> &momenta, GlobalConstraints &constraints) const
+  SurfaceStep::set_constraint_values(StepUnderWay &step, const bool on_old_surface) const
   {
+    GlobalConstraints &constraints = step.constraints;
     constraints.values.resize(constraints.first_rigid());
-    if (constraints.rigid_rows)
-      for (unsigned int k = 0; k < 6; ++k)
-        constraints.values.push_back(constraints.targets[k] +
-                                     (k < 3 ? 2.0 : 3.0) * (parts.flow.inertia ? momenta[k] : 0.0));
+    if (!constraints.rigid_rows)
+      return;
+    // The rows' Y entries take û of the start (MomentumConstraints::assemble_new_surface_rows()); the constant
+    // parts must take the same û, or the linearization is off by 3∫x × (û − u^m) = O(τ) in every BDF2 step,
+    // which the multipliers then enforce against the dynamics (a torque ∝ Ω × L in a tumbling body; the work it
+    // does broke the energy law, doc/scheme.md, "The discrete energy law").
+    std::array<double, 6> momenta = {{0, 0, 0, 0, 0, 0}};
+    if (parts.flow.inertia)
+      momenta = on_old_surface && step.start->fields == &state.solution ?
+                  step.frame.motion.momenta :
+                  rigid_motion(step.request, *step.start->fields).momenta;
+    for (unsigned int k = 0; k < 6; ++k)
+      constraints.values.push_back(constraints.targets[k] + (k < 3 ? 2.0 : 3.0) * momenta[k]);
   }
 
   bool
@@ -312,7 +322,7 @@ namespace FluidSurface
           step.evaluated_curvature = geometry.curvature();
           step.assembly.assemble(assembly_data(step, geometry.normal_field()));
           if (step.constraints.rigid_rows && parts.flow.inertia)
-            set_constraint_values(rigid_motion(step.request, state.solution).momenta, step.constraints);
+            set_constraint_values(step, false);
         }
         if (!solve(step, solution, result, true))
           return false;
@@ -423,8 +433,7 @@ namespace FluidSurface
           step.assembly.assemble(assembly_data(step, geometry.normal_field()));
         }
         set_up_global_constraints(step, step.constraints);
-        set_constraint_values(predicted ? rigid_motion(request, state.solution).momenta : frame.motion.momenta,
-                              step.constraints);
+        set_constraint_values(step, !predicted);
         BorderedSystem::BlockVector solution = bordered_solver.initial_guess(
           BorderedSystem(system.matrix(), step.constraints.columns, step.constraints.rows),
           system.rhs(),

@@ -230,9 +230,13 @@ namespace FluidSurface
      */
     void
     set_up_global_constraints(const StepUnderWay &step, GlobalConstraints &constraints) const;
-    /// The constraint values of the rows linearized about a surface where u^m has the momenta @p momenta.
+    /**
+     * The constraint values of the momentum rows of @p step, linearized about the surface it is assembled on
+     * (@p on_old_surface: S^m): their constant parts are the momenta of the velocity of the rows' correction
+     * terms, the start's û (u^m; BDF2: its backward-Euler form's combination of u^m and u^{m−1}).
+     */
     void
-    set_constraint_values(const std::array<double, 6> &momenta, GlobalConstraints &constraints) const;
+    set_constraint_values(StepUnderWay &step, const bool on_old_surface) const;
     /// Solves the bordered system into @p solution; records the solve in @p result. Returns whether it solved.
     /// @p same_step: a solve of the geometry iteration (BorderedSolver::solve()).
     bool
