@@ -7,7 +7,7 @@
 Columns: the run, its end time, F(0), F(end), the largest rise of B over any interval, max_{s<t} (B(t) − B(s)),
 relative to |F(0)| and per unit time (the rise over the time it took), and the number of steps with B rising.
 Then the per-step law of the program's summary (`steps breaking the energy law`, time stepping/energy law tolerance):
-r_m = F^{m+1} − F^m + τD^{m+1} with the step's own D against 2τ|D^{m+1} − D^m| + ε_L τ|F^m| (ε_L = 1e-6 unless
+r_m = F^{m+1} − F^m + τD^{m+1} with the step's own D against 2τ|D^{m+1} − D^m| + (ε_L τ + 1e-9)|F^m| (ε_L = 1e-6 unless
 --law-tolerance is given): the steps above it, those after t = 1.5 (past the relaxation of the map's spins), and the
 largest excess r_m − bound."""
 import os
@@ -36,7 +36,7 @@ def budget(path):
     breaking, late, excess = 0, 0, 0.0
     for i in range(1, len(t)):
         law = f[i] - f[i - 1] + tau[i] * d[i]
-        bound = 2 * tau[i] * abs(d[i] - d[i - 1]) + max(LAW_TOLERANCE * tau[i], 1e-11) * abs(f[i - 1])
+        bound = 2 * tau[i] * abs(d[i] - d[i - 1]) + (LAW_TOLERANCE * tau[i] + 1e-9) * abs(f[i - 1])
         if law > bound:
             breaking += 1
             late += t[i] > 1.5

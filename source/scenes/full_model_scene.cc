@@ -58,7 +58,7 @@ namespace FluidSurface
   FullModelScene::parse_parameters(ParameterHandler &prm)
   {
     time.parse_parameters(prm);
-    energy_control = EnergyStepController(time.energy_tolerance(), time.energy_law_tolerance());
+    energy_control = EnergyStepController(time.energy_tolerance(), time.energy_law_tolerance(), time.energy_law_action());
     model.parse_parameters(prm, time.maximum_step_size());
     model.step().set_error_estimation(time.error_control());
     model.set_time_scheme(time);

@@ -54,6 +54,16 @@ namespace FluidSurface
         step.total_energy                                = candidate.total;
         decision = energy_control->decide(energy, step.total_energy, step.tau, step.result.dissipation_rate);
       }
+    if (decision.verdict == EnergyStepController::Verdict::stop)
+      {
+        model.restore_last_state();
+        std::ostringstream reason;
+        reason << "step at t = " << time.time() << " with τ = " << step.tau << " broke the energy law: " << decision.reason;
+        throw RunFailed(reason.str(),
+                        "refine the mesh (geometry/refinement), or set 'time stepping/energy law' = retry to accept and "
+                        "count such steps; the output up to the last accepted step, the summary and the last "
+                        "checkpoint are intact");
+      }
     if (decision.verdict == EnergyStepController::Verdict::reject)
       {
         if (model.step().start_corrected_steps())
@@ -106,7 +116,8 @@ namespace FluidSurface
   StepController::accept(const double tau, const double error_estimate, const EnergyStepController::Decision &decision)
   {
     if (decision.verdict == EnergyStepController::Verdict::accept_with_warning)
-      pcout << "    warning: energy rose by " << std::setprecision(3) << decision.rise << " at t = " << time.time()
+      pcout << "    warning: energy rose by " << std::setprecision(3) << decision.rise << " (F + ∫D by "
+            << decision.law_rise << ") at t = " << time.time()
             << " at a rate that does not fall with τ (space discretization); step accepted" << std::endl;
     if (decision.step_size)
       time.set_step_size(*decision.step_size);

@@ -9,9 +9,12 @@
 
 namespace FluidSurface
 {
-  EnergyStepController::EnergyStepController(const double energy_tolerance, const double energy_law_tolerance)
+  EnergyStepController::EnergyStepController(const double       energy_tolerance,
+                                             const double       energy_law_tolerance,
+                                             const std::string &law_action)
     : energy_tolerance(energy_tolerance)
     , energy_law_tolerance(energy_law_tolerance)
+    , law_action(law_action == "stop" ? LawAction::stop : law_action == "count" ? LawAction::count : LawAction::retry)
   {}
 
   bool
@@ -26,14 +29,28 @@ namespace FluidSurface
   EnergyStepController::decide(const double old_energy, const double new_energy, const double tau, const double dissipation)
   {
     Decision decision;
-    decision.rise = new_energy - old_energy;
+    decision.rise     = new_energy - old_energy;
     const double rise = decision.rise;
-    if (!acceptable(old_energy, new_energy, tau))
+    // B = F + ∫D over the step, with ∫D by the step's own dissipation τD^{m+1}. That rectangle rule is off by at
+    // most τ|D^{m+1} − D^m| while D is monotone in the step, and BDF2 keeps its energy law in its G-norm, not in F:
+    // the bound allows twice the rule's error (large only in fast transients; doc/scheme.md, "The discrete energy
+    // law") and ε_L τ|F|, above the rounding of F (1e-9|F|, as in acceptable()).
+    const double law_rise  = rise + tau * dissipation;
+    const double law_bound = 2 * tau * std::abs(dissipation - last_dissipation) +
+                             (energy_law_tolerance * tau + 1e-9) * std::abs(old_energy);
+    const bool   breaks_law = !(law_rise <= law_bound);
+    const bool   judge_law  = law_action != LawAction::count;
+    decision.law_rise       = law_rise;
+    // A break no faster than twice the last one that halving τ showed to be a space error is one too: it is
+    // accepted without a retry (a persistent space error, as the plateau of a rigid rotation on a coarse mesh,
+    // would otherwise cost a rejection per step).
+    const bool known_space_error = judge_law && breaks_law && space_law_rate > 0 && law_rise / tau <= 2 * space_law_rate;
+    if (!acceptable(old_energy, new_energy, tau) || (judge_law && breaks_law && !known_space_error))
       {
         // A rise whose rate rise/τ does not fall when τ is halved is a space-discretization
         // effect that no step size removes: accept it and count it, unless it exceeds 1e-3 F
         // in one step (then the run stops once τ < τ_min).
-        const double rate = rise / tau;
+        const double rate = (judge_law ? law_rise : rise) / tau;
         if (!(std::isfinite(rise) && previous_rate > 0 && rate > 0.5 * previous_rate &&
               rise < 1e-3 * std::abs(old_energy)))
           {
@@ -45,30 +62,38 @@ namespace FluidSurface
             const bool blown_up = !(std::abs(rise) < std::abs(old_energy));
             reason << "energy " << std::setprecision(10) << old_energy << " → " << std::setprecision(blown_up ? 4 : 10)
                    << new_energy;
+            if (judge_law && breaks_law && !blown_up)
+              reason << ", F + ∫D rose by " << std::setprecision(3) << law_rise << " > " << law_bound;
             decision.verdict = Verdict::reject;
             decision.reason  = reason.str();
             return decision;
           }
+        if (law_action == LawAction::stop && breaks_law)
+          {
+            std::ostringstream reason;
+            reason << "F + ∫D rose by " << std::setprecision(3) << law_rise << " > " << law_bound
+                   << " at a rate that did not fall when τ was halved (space discretization)";
+            decision.verdict = Verdict::stop;
+            decision.reason  = reason.str();
+            return decision;
+          }
+        if (judge_law && breaks_law)
+          space_law_rate = law_rise / tau;
         ++n_energy_rises;
         decision.verdict   = Verdict::accept_with_warning;
         decision.step_size = tau_before_rejections;
       }
-    else if (previous_rate > 0 && rise > 0 && rise / tau > 0.5 * previous_rate)
-      // The retry after a rejection passed, but its rise rate rise/τ hardly fell with τ: the rejection
+    else if (previous_rate > 0 && rise > 0 && (judge_law ? law_rise : rise) / tau > 0.5 * previous_rate)
+      // The retry after a rejection passed, but its rise rate hardly fell with τ: the rejection
       // did not remove a time-step error, so τ returns to its value before the rejections (otherwise
       // a steady rise rate just below the tolerance shrinks τ towards τ_min, one rejection at a time).
       decision.step_size = tau_before_rejections;
     previous_rate = 0;
-    // B = F + ∫D over the step, with ∫D by the step's own dissipation τD^{m+1}. That rectangle rule is off by at
-    // most τ|D^{m+1} − D^m| while D is monotone in the step, and BDF2 keeps its energy law in its G-norm, not in F:
-    // the bound allows twice the rule's error (large only in fast transients; doc/scheme.md, "The discrete energy
-    // law", measured 1.4 times at most on the map's fastest spin) and ε_L τ|F|.
-    const double law_rise  = rise + tau * dissipation;
-    const double law_bound = 2 * tau * std::abs(dissipation - last_dissipation) +
-                             std::max(energy_law_tolerance * tau, 1e-11) * std::abs(old_energy);
     max_law_rise_rate = std::max(max_law_rise_rate, law_rise / (tau * std::abs(old_energy)));
-    if (law_rise > law_bound)
+    if (breaks_law)
       ++n_law_breaking_steps;
+    else
+      space_law_rate = 0;
     last_dissipation = dissipation;
     if (rise > 1e-11 * std::abs(old_energy)) // above the rounding of F
       {
@@ -99,6 +124,7 @@ namespace FluidSurface
     data.set("simulation/law breaking steps", n_law_breaking_steps);
     data.set("simulation/max law rise rate", max_law_rise_rate);
     data.set("simulation/last dissipation", last_dissipation);
+    data.set("simulation/space law rate", space_law_rate);
   }
 
   void
@@ -113,5 +139,6 @@ namespace FluidSurface
     n_law_breaking_steps = data.has("simulation/law breaking steps") ? data.get_unsigned("simulation/law breaking steps") : 0;
     max_law_rise_rate    = data.has("simulation/max law rise rate") ? data.get_double("simulation/max law rise rate") : 0;
     last_dissipation     = data.has("simulation/last dissipation") ? data.get_double("simulation/last dissipation") : 0;
+    space_law_rate       = data.has("simulation/space law rate") ? data.get_double("simulation/space law rate") : 0;
   }
 } // namespace FluidSurface

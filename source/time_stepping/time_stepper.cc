@@ -121,9 +121,19 @@ namespace FluidSurface
                       RealRange::at_least(0),
                       "ε_L ≥ 0: a step breaks the energy law when B = F + ∫D rises in it by more than the error of its "
                       "∫D and ε_L·τ·|F(t)|, i.e. when F(t+τ) − F(t) + τD > 2τ|D − D_prev| + ε_L τ|F(t)| with D the "
-                      "dissipation rate of the step's own velocity and D_prev the last step's. Such steps are counted in the summary (`steps breaking the energy law`), not "
-                      "rejected (doc/scheme.md, \"The discrete energy law\"). The default is the relative rate below "
-                      "which `steady state` calls F constant.");
+                      "dissipation rate of the step's own velocity and D_prev the last step's (doc/scheme.md, \"The "
+                      "discrete energy law\"). The default is the relative rate below which `steady state` calls F "
+                      "constant.");
+    prm.declare_entry("energy law",
+                      "count",
+                      Patterns::Selection("count|retry|stop"),
+                      "What a step that breaks the energy law (`energy law tolerance`) does. count: it is accepted and "
+                      "counted (`steps breaking the energy law` in the summary). retry: it is rejected and retried like "
+                      "a step whose F rose too fast (with the iterated geometry, as backward Euler, or with a smaller τ); "
+                      "a break whose rate (F(t+τ) − F(t) + τD)/τ did not fall when τ was halved is a space-discretization "
+                      "effect: the step is accepted and counted, and so are later breaks no faster than twice it. stop: "
+                      "such a break ends the run instead (refine the mesh). retry costs a solve per break and its "
+                      "backward-Euler fallback dissipates (doc/scheme.md, \"The discrete energy law\").");
     prm.leave_subsection();
   }
 
@@ -144,6 +154,7 @@ namespace FluidSurface
     easy_steps                = prm.get_integer("easy steps before growth");
     relative_energy_tolerance = prm.get_double("energy tolerance");
     relative_energy_law_tolerance = prm.get_double("energy law tolerance");
+    law_action                    = prm.get("energy law");
     error_tolerance           = prm.get_double("error tolerance");
     scheme_name = prm.get("scheme");
     frame_kind  = prm.get("frame") == "Tisserand" ? FlowStepFrame::tisserand : FlowStepFrame::lab;

@@ -29,7 +29,8 @@ namespace FluidSurface
     {
       accept,             ///< F did not rise faster than the tolerance
       reject,             ///< retry the step with a smaller τ
-      accept_with_warning ///< a rise that halving τ did not reduce (space discretization)
+      accept_with_warning, ///< a rise that halving τ did not reduce (space discretization)
+      stop                 ///< a break of the energy law that halving τ did not reduce, with `energy law = stop`
     };
 
     /// What to do with a step, and with τ afterwards.
@@ -40,13 +41,20 @@ namespace FluidSurface
       std::string reason;
       /// The energy change F(t+τ) − F(t).
       double rise = 0;
+      /// The rise of B = F + ∫D in the step, F(t+τ) − F(t) + τD.
+      double law_rise = 0;
       /// If set, the τ to continue with (the τ before the rejections, which did not remove a time-step error).
       std::optional<double> step_size;
     };
 
-    /// A controller for the relative energy rise rate @p energy_tolerance ε_F that counts the steps on which
-    /// B = F + ∫D rises faster than the relative rate @p energy_law_tolerance ε_L.
-    explicit EnergyStepController(const double energy_tolerance = 0, const double energy_law_tolerance = 0);
+    /**
+     * A controller for the relative energy rise rate @p energy_tolerance ε_F and the energy law with the
+     * relative rate @p energy_law_tolerance ε_L, whose breaks are retried, stop the run or are only counted
+     * (@p law_action: "retry", "stop", "count"; `time stepping/energy law`).
+     */
+    explicit EnergyStepController(const double       energy_tolerance     = 0,
+                                  const double       energy_law_tolerance = 0,
+                                  const std::string &law_action           = "count");
 
     /**
      * Whether an energy change from @p old_energy to @p new_energy in a step
@@ -57,9 +65,10 @@ namespace FluidSurface
 
     /**
      * Judges a solved step from @p old_energy to @p new_energy of size @p tau, whose own velocity dissipates at
-     * the rate @p dissipation D, and updates the counters; a rejected step is retried by the caller. An accepted
-     * step with F(t+τ) − F(t) + τD > 2τ|D − D_prev| + ε_L τ|F(t)| (D_prev: the last accepted step's; the first term
-     * bounds the error of τD as the step's ∫D) is counted as breaking the energy law.
+     * the rate @p dissipation D, and updates the counters; a rejected step is retried by the caller. A step with
+     * F(t+τ) − F(t) + τD > 2τ|D − D_prev| + ε_L τ|F(t)| (D_prev: the last accepted step's; the first term bounds
+     * the error of τD as the step's ∫D) breaks the energy law: it is rejected (unless the law's action is
+     * "count"), and counted once accepted, which it is only when its rate did not fall with τ (or with "count").
      */
     Decision
     decide(const double old_energy, const double new_energy, const double tau, const double dissipation);
@@ -84,8 +93,17 @@ namespace FluidSurface
     load(const CheckpointData &data);
 
   private:
-    double energy_tolerance;
-    double energy_law_tolerance;
+    /// `time stepping/energy law`.
+    enum class LawAction
+    {
+      retry,
+      stop,
+      count
+    };
+
+    double    energy_tolerance;
+    double    energy_law_tolerance;
+    LawAction law_action;
 
     /// rise/τ of the last rejected step (0 after an accepted one).
     double previous_rate = 0;
@@ -101,6 +119,9 @@ namespace FluidSurface
     double       max_law_rise_rate    = 0;
     /// D of the last accepted step (of the initial state: 0).
     double last_dissipation = 0;
+    /// The rate (F(t+τ) − F(t) + τD)/τ of the last break of the energy law accepted as a space error (0 once a step
+    /// keeps the law).
+    double space_law_rate = 0;
   };
 } // namespace FluidSurface
 

@@ -106,6 +106,13 @@ namespace FluidSurface
       return relative_energy_law_tolerance;
     }
 
+    /// What a step that breaks the energy law does (`energy law`): "count", "retry" or "stop".
+    const std::string &
+    energy_law_action() const
+    {
+      return law_action;
+    }
+
     /**
      * Advances time by the τ just used. With error control (error_control()) and an @p error estimate e ≥ 0 of
      * the step, the next τ is τ·min(2, 0.9 (ε_t/e)^½); otherwise τ grows by the growth factor after enough easy
@@ -234,6 +241,7 @@ namespace FluidSurface
     unsigned int easy_steps;
     double       relative_energy_tolerance;
     double       relative_energy_law_tolerance = 1e-6;
+    std::string  law_action = "count"; ///< `energy law`
     double       error_tolerance = 0; ///< ε_t; 0: no error control
     unsigned int fallback_steps  = 0; ///< K of `backward Euler steps after rejection`
     std::string   scheme_name = "backward Euler";   ///< `scheme`
