@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The fast subset of the parameter fuzzer (the full sweep is benchmarks/fuzz). (1) For every entry of
 // Simulation::declare_parameters, hostile values derived from its pattern (empty, a word, nan, inf, just
-// outside each bound, a wrong list length, a missing file) are checked with --validate: each is refused with
+// outside each bound, a wrong list length, a missing file) are checked with --validate (the entries of subsection
+// second variation, which only --equilibrium reads, with --equilibrium on the unit sphere): each is refused with
 // exit status 2 and one message that names the entry; its boundary values are accepted. One line per entry.
 // (2) Representative cases of each pattern kind run for real on a coarse scene: they end with exit status 0,
 // or 2 and a message naming the entry (never 1 from a solver).
@@ -148,6 +149,11 @@ namespace
       base = "subsection model\n  set scene = fixed surface\nend\nsubsection geometry\n  set shape = sphere\n"
              "  set refinement = 1\nend\nsubsection fixed surface\n  set problem = decaying mode\nend\n"
              "subsection time stepping\n  set end time = 0.04\n  set time step = 0.02\nend\n";
+    else if (section == "second variation")
+      // Only fluid_surface --equilibrium reads it: the unit sphere, whose equilibrium is immediate.
+      return "subsection equilibrium\n  set reduced volume = 1\n  set output file = fuzz.csv\nend\n"
+             "subsection second variation\n  set " +
+             path.substr(path.rfind('/') + 1) + " = " + value + "\nend\n";
     else if (section == "stability")
       // Scene stability reads it: the oblate equilibrium at rest in its frame, at most as many eigenvalues
       // reported as the Krylov dimension the entry tried allows.
@@ -193,6 +199,13 @@ namespace
     return {status, message};
   }
 
+  /// How an entry is checked: --validate, or --equilibrium for the subsection only that command reads.
+  std::string
+  mode_of(const std::string &path)
+  {
+    return path.rfind("second variation/", 0) == 0 ? "--equilibrium" : "--validate";
+  }
+
   bool
   names(const std::string &message, const std::string &path)
   {
@@ -224,7 +237,7 @@ main(int argc, char **argv)
       std::string  anomalies;
       for (const std::string &value : refused)
         {
-          const auto [status, message] = run_file(case_file(entry.path, value), "--validate");
+          const auto [status, message] = run_file(case_file(entry.path, value), mode_of(entry.path));
           if (status == 2 && names(message, entry.path) && message.find("[more than one line]") == std::string::npos)
             ++n_refused;
           else
@@ -232,7 +245,7 @@ main(int argc, char **argv)
         }
       for (const std::string &value : accepted)
         {
-          const auto [status, message] = run_file(case_file(entry.path, value), "--validate");
+          const auto [status, message] = run_file(case_file(entry.path, value), mode_of(entry.path));
           if (status == 0)
             ++n_accepted;
           else if (status == 2 && message.find(", line ") == std::string::npos)

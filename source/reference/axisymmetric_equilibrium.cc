@@ -10,6 +10,7 @@
 #include <fluid_surface/reference/axisymmetric_equilibrium.h>
 #include <fluid_surface/reference/equilibrium_continuation.h>
 #include <fluid_surface/reference/generating_curve_collocation.h>
+#include <fluid_surface/reference/second_variation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -248,6 +249,15 @@ namespace FluidSurface
     M.solve(rhs);
     z.assign(rhs.begin(), rhs.end());
 
+    // k_s = H − sin ψ / r from the ψ equation (at the pole k_s = k_φ = H/2), then k_s' by one differentiation.
+    meridian_curvature_values.resize(N + 1);
+    meridian_curvature_slopes.assign(N + 1, 0.);
+    for (unsigned int j = 0; j <= N; ++j)
+      meridian_curvature_values[j] = (j == 0 ? 0.5 * curvature[0] : curvature[j] - std::sin(psi[j]) / r[j]);
+    for (unsigned int j = 0; j <= N; ++j)
+      for (unsigned int i = 0; i <= N; ++i)
+        meridian_curvature_slopes[j] += problem.D[j * (N + 1) + i] * meridian_curvature_values[i] / S;
+
     area_value = volume_value = inertia_value = bending_value = 0;
     for (unsigned int j = 0; j <= N; ++j)
       {
@@ -427,13 +437,27 @@ namespace FluidSurface
   {
     dealii::ParameterHandler prm;
     AxisymmetricEquilibrium::declare_parameters(prm);
+    SecondVariation::declare_parameters(prm);
     parse_parameter_file(prm, parameter_file);
     AxisymmetricEquilibrium equilibrium;
     equilibrium.parse_parameters(prm);
+    SecondVariation second_variation;
+    second_variation.parse_parameters(prm);
     solve_equilibrium_of_entries(equilibrium);
     equilibrium.print(out);
     equilibrium.write_curve_csv(equilibrium.parameters().output_file);
     out << "output file: " << equilibrium.parameters().output_file << '\n';
+    if (second_variation.active())
+      {
+        second_variation.compute(equilibrium);
+        second_variation.print(out);
+        const std::string &file = second_variation.parameters().eigenfunction_file;
+        if (!file.empty())
+          {
+            second_variation.write_eigenfunctions_csv(file);
+            out << "second variation eigenfunction file: " << file << '\n';
+          }
+      }
     return 0;
   }
 } // namespace FluidSurface

@@ -55,6 +55,33 @@ namespace FluidSurface
     return {v[0], -v[1], pi - v[2], -v[3]};
   }
 
+  std::array<double, 2>
+  AxisymmetricEquilibrium::meridian_curvature(const double s) const
+  {
+    const double S     = half_length;
+    const bool   lower = (s > S);
+    const double t     = lower ? std::max(0., 2 - s / S) : std::max(0., s / S);
+    double       numerator[2] = {0, 0}, denominator = 0;
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        const double d = t - nodes[j];
+        if (d == 0)
+          {
+            numerator[0] = meridian_curvature_values[j];
+            numerator[1] = meridian_curvature_slopes[j];
+            denominator  = 1;
+            break;
+          }
+        const double c = barycentric_weights[j] / d;
+        denominator += c;
+        numerator[0] += c * meridian_curvature_values[j];
+        numerator[1] += c * meridian_curvature_slopes[j];
+      }
+    // The lower half is the upper half reflected: ψ(s) = π − ψ(2S − s), so k_s is even and k_s' odd about S.
+    const double slope = numerator[1] / denominator;
+    return {{numerator[0] / denominator, lower ? -slope : slope}};
+  }
+
   dealii::Point<3>
   AxisymmetricEquilibrium::map_from_sphere(const dealii::Point<3> &p) const
   {

@@ -17,7 +17,8 @@ namespace FluidSurface
     const char *usage = R"(Usage:
   fluid_surface FILE.prm                 run the experiment described by FILE.prm
   fluid_surface --validate FILE.prm      read and check FILE.prm, compute nothing
-  fluid_surface --equilibrium FILE.prm   compute a rotating axisymmetric equilibrium shape
+  fluid_surface --equilibrium FILE.prm   compute a rotating axisymmetric equilibrium shape (and, with subsection
+                                         second variation, the eigenvalues of its second variation per m)
   fluid_surface --print-parameters       print every parameter with default, pattern and help
   fluid_surface --help                   this text
 
@@ -76,8 +77,9 @@ Exit status: 0 success (or stopped after 'checkpoint/steps per run'), 1 a comput
         }
     }
 
-    /// What `fluid_surface --equilibrium FILE` reads: subsection equilibrium (AxisymmetricEquilibrium).
-    const ParametersRead equilibrium_command_reads = {"--equilibrium", {"equilibrium"}, {}};
+    /// What `fluid_surface --equilibrium FILE` reads: subsections equilibrium (AxisymmetricEquilibrium) and second
+    /// variation (SecondVariation).
+    const ParametersRead equilibrium_command_reads = {"--equilibrium", {"equilibrium", "second variation"}, {}};
 
     /// `fluid_surface --equilibrium FILE`: the equilibrium's report on @p out.
     int

@@ -6,6 +6,7 @@
 #include <fluid_surface/linear_algebra/reused_factorization_solver.h>
 #include <fluid_surface/model/fluid_deformable_surface.h>
 #include <fluid_surface/postprocess/diagnostics.h>
+#include <fluid_surface/reference/second_variation.h>
 #include <fluid_surface/scenes/fixed_surface_scene.h>
 #include <fluid_surface/scenes/full_model_scene.h>
 #include <fluid_surface/scenes/geometry_scene.h>
@@ -51,6 +52,7 @@ namespace FluidSurface
     FluidDeformableSurface::declare_parameters(prm);
     Diagnostics::declare_parameters(prm);
     Checkpoint::declare_parameters(prm);
+    SecondVariation::declare_parameters(prm);
     SteadyState::declare_parameters(prm);
     StabilityScene::declare_parameters(prm);
   }

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <array>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -223,6 +224,14 @@ namespace FluidSurface
     std::vector<double>
     curve_point(const double s) const;
 
+    /**
+     * The meridian curvature k_s = dψ/ds of the generating curve and its derivative dk_s/ds at arc length @p s ∈
+     * [0, 2S] from the north pole (ψ the tangent angle of curve_point(); k_s = 1/R on a sphere of radius R).
+     * k_s = H − sin ψ / r at the collocation nodes (the ψ equation), differentiated once spectrally.
+     */
+    std::array<double, 2>
+    meridian_curvature(const double s) const;
+
     /// Writes the generating curve pole to pole: header `s,r,z,psi,H`, then `output points` rows.
     void
     write_curve_csv(const std::string &file) const;
@@ -263,6 +272,9 @@ namespace FluidSurface
 
     /// Nodal values on the half curve: ψ, r, z, H (ψ' + sinψ/r, positive on spheres), η.
     std::vector<double> psi, r, z, curvature, eta;
+
+    /// Nodal values on the half curve: the meridian curvature k_s = ψ' and its derivative k_s'.
+    std::vector<double> meridian_curvature_values, meridian_curvature_slopes;
 
     double half_length = 0; ///< S
     double sigma       = 0; ///< multiplier of the area (surface tension)
