@@ -19,7 +19,11 @@ namespace FluidSurface
    * step size removes, so the step is accepted with a warning (if the rise
    * stays below 10⁻³|F|) and τ returns to its value before the rejections.
    * The controller counts these rises and the accepted steps on which F rose
-   * at all, for the summary; the counters are part of a checkpoint.
+   * at all, for the summary; the counters are part of a checkpoint. The same
+   * step is checked against the discrete energy law (decide()): with
+   * `time stepping/energy law = retry` a break is rejected like a rise of F,
+   * with `stop` a break that halving τ does not reduce ends the run, with
+   * `count` breaks are only counted.
    */
   class EnergyStepController
   {
