@@ -17,7 +17,12 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import statistics_columns  # noqa: E402
 
 
-def budget(path):
+LAW_TOLERANCE = 1e-6
+
+
+def budget(path, law_tolerance=LAW_TOLERANCE):
+    """(end time, F(0), F(end), largest rise of B relative to |F(0)|, its rate per unit time, steps with B rising,
+    steps breaking the per-step law, of them after t = 1.5, the largest excess over the law's bound)."""
     c = statistics_columns.read(os.path.join(path, "statistics"))
     t, f, d = c["time"], c["total energy"], c["dissipation rate"]
     b, integral = [f[0]], 0.0
@@ -36,7 +41,7 @@ def budget(path):
     breaking, late, excess = 0, 0, 0.0
     for i in range(1, len(t)):
         law = f[i] - f[i - 1] + tau[i] * d[i]
-        bound = 2 * tau[i] * abs(d[i] - d[i - 1]) + (LAW_TOLERANCE * tau[i] + 1e-9) * abs(f[i - 1])
+        bound = 2 * tau[i] * abs(d[i] - d[i - 1]) + (law_tolerance * tau[i] + 1e-9) * abs(f[i - 1])
         if law > bound:
             breaking += 1
             late += t[i] > 1.5
@@ -44,15 +49,19 @@ def budget(path):
     return t[-1], f[0], f[-1], rise / abs(f[0]), rate / abs(f[0]), rising, breaking, late, excess
 
 
-arguments = sys.argv[1:]
-LAW_TOLERANCE = 1e-6
-if "--law-tolerance" in arguments:
-    k = arguments.index("--law-tolerance")
-    LAW_TOLERANCE = float(arguments[k + 1])
-    del arguments[k:k + 2]
-print("run,end time,F(0),F(end),max rise of F+int D (rel.),its rate per unit time (rel.),steps with F+int D rising,"
-      "steps breaking the law,of them after t = 1.5,largest excess over the bound")
-for path in arguments:
-    end, f0, f1, rise, rate, rising, breaking, late, excess = budget(path)
-    print(f"{os.path.basename(os.path.normpath(path))},{end:.4f},{f0:.6f},{f1:.6f},{rise:.2e},{rate:.2e},{rising},"
-          f"{breaking},{late},{excess:.2e}")
+def main(arguments):
+    law_tolerance = LAW_TOLERANCE
+    if "--law-tolerance" in arguments:
+        k = arguments.index("--law-tolerance")
+        law_tolerance = float(arguments[k + 1])
+        del arguments[k:k + 2]
+    print("run,end time,F(0),F(end),max rise of F+int D (rel.),its rate per unit time (rel.),steps with F+int D rising,"
+          "steps breaking the law,of them after t = 1.5,largest excess over the bound")
+    for path in arguments:
+        end, f0, f1, rise, rate, rising, breaking, late, excess = budget(path, law_tolerance)
+        print(f"{os.path.basename(os.path.normpath(path))},{end:.4f},{f0:.6f},{f1:.6f},{rise:.2e},{rate:.2e},{rising},"
+              f"{breaking},{late},{excess:.2e}")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

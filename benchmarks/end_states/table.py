@@ -21,6 +21,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "phase3"))
 import statistics_columns  # noqa: E402
+from energy_budget import budget  # noqa: E402
 
 
 def shape_class(l1, l2, l3, delta=1e-2):
@@ -64,10 +65,14 @@ for prm in sorted(glob.glob(os.path.join(sys.argv[1], "v*_L*_*.prm"))):
         "lambda1": f"{lam[0]:.6g}", "lambda2": f"{lam[1]:.6g}", "lambda3": f"{lam[2]:.6g}",
         "rigid fraction": f"{c['rigid fraction'][-1]:.6f}", "end time": f"{c['time'][-1]:.6g}",
         "shape": shape_class(*lam), "tilt angle": f"{c['tilt angle'][-1]:.3g}", "status": status, "L0 measured": f"{L0m:.6g}"})
+    _, _, _, rise, _, _, breaking, _, excess = budget(run)
+    row.update({"max rise of B (rel.)": f"{rise:.2e}", "steps breaking the law": breaking,
+                "largest excess over the bound": f"{excess:.2e}"})
     rows.append(row)
 
 fields = ["v", "L0", "start", "F", "W", "omega", "lambda1", "lambda2", "lambda3", "rigid fraction", "end time",
-          "shape", "tilt angle", "status", "L0 measured"]
+          "shape", "tilt angle", "status", "L0 measured", "max rise of B (rel.)", "steps breaking the law",
+          "largest excess over the bound"]
 with open(sys.argv[2], "w", newline="") as f:
     w = csv.DictWriter(f, fieldnames=fields)
     w.writeheader()

@@ -66,7 +66,9 @@ namespace FluidSurface
       }
     if (decision.verdict == EnergyStepController::Verdict::reject)
       {
-        if (model.step().start_corrected_steps())
+        if (decision.law_only)
+          retry(step.tau, StepFailure::energy_rise, decision.reason, "");
+        else if (model.step().start_corrected_steps())
           {
             model.restore_last_state();
             time.repeat_step();

@@ -64,8 +64,9 @@ namespace FluidSurface
                    << new_energy;
             if (judge_law && breaks_law && !blown_up)
               reason << ", F + ∫D rose by " << std::setprecision(3) << law_rise << " > " << law_bound;
-            decision.verdict = Verdict::reject;
-            decision.reason  = reason.str();
+            decision.verdict  = Verdict::reject;
+            decision.reason   = reason.str();
+            decision.law_only = acceptable(old_energy, new_energy, tau);
             return decision;
           }
         if (law_action == LawAction::stop && breaks_law)

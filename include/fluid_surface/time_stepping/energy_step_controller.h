@@ -49,6 +49,10 @@ namespace FluidSurface
       double law_rise = 0;
       /// If set, the τ to continue with (the τ before the rejections, which did not remove a time-step error).
       std::optional<double> step_size;
+      /// For Verdict::reject: F passed its tolerance and only the energy law was broken. Such a step is retried
+      /// with the same scheme at a smaller τ (not by the backward-Euler fallback, whose own dissipation would hide
+      /// a space error that returns in the next step: the halving is what tells the two kinds apart).
+      bool law_only = false;
     };
 
     /**
