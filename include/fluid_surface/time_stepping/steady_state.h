@@ -26,8 +26,13 @@ namespace FluidSurface
    * symmetry breaks (its excess is of the order of K), or the oblate spinning
    * about its short axis, its axis of largest inertia, while its symmetry
    * deviation e(λ) grows exponentially from 1e-5 (caught by the eigenvalues,
-   * as long as e(λ) grows by more than δ per unit time). The samples inside
-   * the window are part of a checkpoint.
+   * as long as e(λ) grows by more than δ per unit time). A seed of 1e-6 grows
+   * more slowly than δ = 1e-6 catches: the gap g = min(λ₂ − λ₁, λ₃ − λ₂)/λ₃
+   * of the two closest eigenvalues must also not grow faster than σ_s,
+   * ln(g(t)/g(t − T_w))/T_w < σ_s, once g(t − T_w) is above the rounding of
+   * the eigenvalues: a growing mode that breaks the symmetry of a body of
+   * revolution makes the state a saddle, not an end state (issue 49). The
+   * samples inside the window are part of a checkpoint.
    */
   class SteadyState
   {
@@ -75,6 +80,8 @@ namespace FluidSurface
     double last_energy_rate          = 0;
     double last_inertia_rate         = 0;
     double last_kinetic_excess       = 0;
+    double gap_growth_tolerance      = 0.01;
+    double last_gap_growth           = 0;
     /// At least T_w/20 apart, the oldest at or before t − T_w.
     std::vector<Sample> samples;
   };

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// `steady state/symmetry growth tolerance` (issue 49): a body of revolution whose symmetry-breaking mode grows is a
+// saddle, not an end state, even while F and the inertia eigenvalues are flat to δ. SteadyState is fed the samples
+// of such a state: F constant, λ₁ = λ₃/2 − g λ₃, λ₂ = λ₃/2 with the gap g growing like e^{σt} from 2e-7 (the seeded
+// spinning oblate of v = 0.95, L = 20 at refinement 3: σ = 0.46), so that every |Δλ_i|/(T_w λ₃) stays below
+// δ = 1e-6. Printed: the first time at which the check reports the end state, for σ = 0.46 (never: the gap grows),
+// σ = 0 (a steady gap: after one window), σ = −0.5 (a decaying mode: after one window) and σ = 0.46 below the
+// rounding floor g < 1e-12 (the gap is not judged: after one window).
+#include <deal.II/base/parameter_handler.h>
+
+#include <fluid_surface/time_stepping/steady_state.h>
+
+#include <cmath>
+#include <iostream>
+
+using namespace FluidSurface;
+
+namespace
+{
+  void
+  run(const char *name, const double rate, const double g0)
+  {
+    dealii::ParameterHandler prm;
+    SteadyState::declare_parameters(prm);
+    prm.enter_subsection("steady state");
+    prm.set("rate tolerance", "1e-6");
+    prm.set("window", "1");
+    prm.leave_subsection();
+    SteadyState steady;
+    steady.parse_parameters(prm);
+    const double lambda3 = 10;
+    for (int k = 0; k <= 200; ++k)
+      {
+        const double        t = 0.05 * k;
+        const double        g = g0 * std::exp(rate * t);
+        SteadyState::Sample sample{t, 47.6, {lambda3 / 2 - g * lambda3, lambda3 / 2, lambda3}};
+        if (steady.reached(sample, 0))
+          {
+            std::cout << name << ": end state at t = " << t << std::endl;
+            return;
+          }
+      }
+    std::cout << name << ": no end state up to t = 10" << std::endl;
+  }
+} // namespace
+
+int
+main()
+{
+  run("growing mode", 0.46, 2e-7);
+  run("steady gap", 0, 2e-7);
+  run("decaying mode", -0.5, 2e-7);
+  run("below the rounding floor", 0.46, 1e-14);
+}
