@@ -130,10 +130,11 @@ namespace FluidSurface
                       "What a step that breaks the energy law (`energy law tolerance`) does. count: it is accepted and "
                       "counted (`steps breaking the energy law` in the summary). retry: it is rejected and retried with "
                       "the same scheme at a smaller τ (the factor of rejected steps; a step whose F also rose too fast "
-                      "is retried as such, with the iterated geometry, as backward Euler or with a smaller τ); a break whose rate (F(t+τ) − F(t) + τD)/τ did not fall when τ was halved is a space-discretization "
-                      "effect: the step is accepted and counted, and so are later breaks no faster than twice it. stop: "
-                      "such a break ends the run instead (refine the mesh). retry costs a solve per break "
-                      "(doc/scheme.md, \"The discrete energy law\").");
+                      "is retried as such, with the iterated geometry, as backward Euler or with a smaller τ); a break "
+                      "whose rate (F(t+τ) − F(t) + τD)/τ did not fall when τ was halved is a space-discretization effect: "
+                      "the step is accepted and counted, and so are later breaks no faster than twice it. stop: such a "
+                      "break ends the run instead (refine the mesh). retry costs a solve per break (doc/scheme.md, "
+                      "\"The discrete energy law\").");
     prm.leave_subsection();
   }
 
