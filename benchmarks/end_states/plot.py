@@ -4,9 +4,11 @@
 marker by shape class, colour by F − W (the rotational energy |L|²/(2λ₃) of a rigid end state), a red edge for a
 run that is not steady, and a ring around the points where the two starts end in different states (F differs by
 more than 1e-3 relative, above the
-refinement-3 spread of one state reached from the two starts, or the shape class differs, and both are steady): a
-second local minimum.
-    /usr/bin/python3 benchmarks/end_states/plot.py results.csv phase_diagram.png"""
+refinement-3 spread of one state reached from the two starts, or the shape class differs, and both are steady). With
+a `class` column (classify.py) the ring is solid only where both end states are verified minima (bistability) and
+dashed otherwise, a saddle gets a red cross, and with the stability chart's CSV the boundary L_c(v) of the spinning
+oblate's minima (stability_chart/chart.csv) is drawn on both panels (interpolated between the L₀ columns).
+    /usr/bin/python3 benchmarks/end_states/plot.py results.csv phase_diagram.png [chart.csv]"""
 import csv
 import sys
 
@@ -24,6 +26,25 @@ rotational = [float(r["F"]) - float(r["W"]) for r in rows] or [0.0]
 norm = plt.Normalize(min(rotational), max(rotational))
 
 
+def minimum(r):
+    return r.get("class") == "minimum"
+
+
+def column_of(L):
+    """The x of angular momentum L between the equally spaced L₀ columns."""
+    for k in range(len(l0s) - 1):
+        if L <= l0s[k + 1]:
+            return k + (L - l0s[k]) / (l0s[k + 1] - l0s[k])
+    return len(l0s) - 1
+
+
+boundary = []
+if len(sys.argv) > 3:
+    for c in csv.DictReader(open(sys.argv[3])):
+        if c["branch"] == "oblate" and c["L_c isolated"] not in ("", "nan"):
+            boundary.append((float(c["v"]), float(c["L_c isolated"])))
+
+
 def differs(a, b):
     if a["status"] != "steady" or b["status"] != "steady":
         return False
@@ -39,10 +60,17 @@ for ax, start in zip(axes, ("prolate", "oblate")):
         x, y = column[float(r["L0"])], float(r["v"])
         ax.scatter([x], [y], marker=markers[r["shape"]], s=150, c=[float(r["F"]) - float(r["W"])], cmap="viridis",
                    norm=norm, edgecolors="black" if r["status"] == "steady" else "red", linewidths=1.5, zorder=3)
+        if r.get("class", "").startswith("saddle"):
+            ax.scatter([x], [y], marker="x", s=90, c="red", linewidths=2, zorder=4)
         pair = by_point[(r["v"], r["L0"])]
         if len(pair) == 2 and differs(pair["prolate"], pair["oblate"]):
+            verified = "class" not in r or (minimum(pair["prolate"]) and minimum(pair["oblate"]))
             ax.scatter([x], [y], marker="o", s=420, facecolors="none", edgecolors="tab:orange", linewidths=1.5,
-                       zorder=2)
+                       linestyles="solid" if verified else "dashed", zorder=2)
+    if boundary:
+        points = sorted(boundary)
+        ax.plot([column_of(L) for _, L in points], [v for v, _ in points], color="tab:red", zorder=1,
+                label="L_c(v), spinning oblate")
     ax.set_xticks(range(len(l0s)), [f"{L0:g}" for L0 in l0s])
     ax.set_xlim(-0.5, len(l0s) - 0.5)
     ax.set_xlabel("L₀")
@@ -56,6 +84,10 @@ handles += [Line2D([], [], marker="s", linestyle="none", color="grey", markeredg
                    label="not steady"),
             Line2D([], [], marker="o", linestyle="none", markerfacecolor="none", markeredgecolor="tab:orange",
                    markersize=14, label="starts end apart")]
+if any("class" in r for r in rows):
+    handles.append(Line2D([], [], marker="x", linestyle="none", color="red", markersize=9, label="saddle"))
+if boundary:
+    handles.append(Line2D([], [], color="tab:red", label="L_c(v) of the spinning oblate"))
 fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=9)
 fig.subplots_adjust(bottom=0.22, right=0.86)
 fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap="viridis"), cax=fig.add_axes([0.89, 0.22, 0.02, 0.66]),
