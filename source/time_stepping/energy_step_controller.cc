@@ -84,16 +84,25 @@ namespace FluidSurface
         decision.verdict   = Verdict::accept_with_warning;
         decision.step_size = tau_before_rejections;
       }
-    else if (previous_rate > 0 && rise > 0 && (judge_law ? law_rise : rise) / tau > 0.5 * previous_rate)
-      // The retry after a rejection passed, but its rise rate hardly fell with τ: the rejection
-      // did not remove a time-step error, so τ returns to its value before the rejections (otherwise
-      // a steady rise rate just below the tolerance shrinks τ towards τ_min, one rejection at a time).
-      decision.step_size = tau_before_rejections;
+    else if (previous_rate > 0 && (judge_law ? law_rise : rise) > 0 &&
+             (judge_law ? law_rise : rise) / tau > 0.5 * previous_rate)
+      {
+        // The retry after a rejection passed, but its rise rate hardly fell with τ: the rejection
+        // did not remove a time-step error, so τ returns to its value before the rejections (otherwise
+        // a steady rise rate just below the tolerance shrinks τ towards τ_min, one rejection at a time).
+        // The retry may pass only because its smaller rise fell under the bound's rounding floor: the
+        // break's rate is then a known space error too.
+        decision.step_size = tau_before_rejections;
+        if (judge_law)
+          space_law_rate = std::max(space_law_rate, previous_rate);
+      }
     previous_rate = 0;
     max_law_rise_rate = std::max(max_law_rise_rate, law_rise / (tau * std::abs(old_energy)));
+    // A kept step forgets the space error only once its rate has clearly fallen: near the rounding floor of the
+    // bound a persistent space error flips between kept and breaking steps, and each forgetting would cost a retry.
     if (breaks_law)
       ++n_law_breaking_steps;
-    else
+    else if (law_rise / tau <= 0.5 * space_law_rate)
       space_law_rate = 0;
     last_dissipation = dissipation;
     if (rise > 1e-11 * std::abs(old_energy)) // above the rounding of F
