@@ -126,9 +126,14 @@ def refine(branch, v, kind, cls, lo, hi, hi_row):
 def resting_limit(branch, v_stable, v_unstable, cls):
     """The v between two of the grid where the resting equilibrium's class eigenvalue is zero (L_c reaches 0), by
     the secant method at L = 0."""
-    value = lambda v: evaluate(branch, v, 0.0)["by_class"]["isolated"][cls]
+    def value(v):
+        row = evaluate(branch, v, 0.0)
+        return row["by_class"]["isolated"].get(cls) if row else None
+
     v0, v1, f0, f1 = v_stable, v_unstable, value(v_stable), value(v_unstable)
     for _ in range(REFINEMENTS):
+        if f0 is None or f1 is None:
+            return None, None
         if abs(f1) < 1e-9 or abs(v1 - v0) < 1e-12:
             break
         v0, v1, f0 = v1, v1 - f1 * (v1 - v0) / (f1 - f0), f1
@@ -141,9 +146,12 @@ for branch in ["oblate", "prolate"]:
     for v in VS:
         iso = crossing(branch, v, "isolated")
         drv = crossing(branch, v, "driven")
-        if (rows and rows[-1][0] == branch and isinstance(rows[-1][2], float) and rows[-1][2] > 0
-                and iso["at"] == "negative at rest" and not quick):
+        if (rows and rows[-1][0] == branch and rows[-1][5].startswith("root") and iso["at"] == "negative at rest"
+                and rows[-1][4] == iso["cls"]):
             limit, v_limit = resting_limit(branch, rows[-1][1], v, iso["cls"])
+        else:
+            limit = None
+        if limit:
             rows.append([branch, v_limit, 0.0, 0.0, limit["cls"], limit["at"], 0.0, 0.0, limit["cls"], limit["at"]])
             print(branch, v_limit, limit, flush=True)
         rows.append([branch, v, iso["L"], iso["omega"], iso["cls"], iso["at"], drv["L"], drv["omega"], drv["cls"], drv["at"]])

@@ -40,7 +40,9 @@ namespace FluidSurface
                              (energy_law_tolerance * tau + 1e-9) * std::abs(old_energy);
     const bool   breaks_law = !(law_rise <= law_bound);
     const bool   judge_law  = law_action != LawAction::count;
-    decision.law_rise       = law_rise;
+    // The rise the controller judges: of F + ∫D when the law acts, of F otherwise.
+    const double judged_rise = judge_law ? law_rise : rise;
+    decision.law_rise        = law_rise;
     // A break no faster than twice the last one that halving τ showed to be a space error is one too: it is
     // accepted without a retry (a persistent space error, as the plateau of a rigid rotation on a coarse mesh,
     // would otherwise cost a rejection per step).
@@ -50,7 +52,7 @@ namespace FluidSurface
         // A rise whose rate rise/τ does not fall when τ is halved is a space-discretization
         // effect that no step size removes: accept it and count it, unless it exceeds 1e-3 F
         // in one step (then the run stops once τ < τ_min).
-        const double rate = (judge_law ? law_rise : rise) / tau;
+        const double rate = judged_rise / tau;
         if (!(std::isfinite(rise) && previous_rate > 0 && rate > 0.5 * previous_rate &&
               rise < 1e-3 * std::abs(old_energy)))
           {
@@ -84,8 +86,7 @@ namespace FluidSurface
         decision.verdict   = Verdict::accept_with_warning;
         decision.step_size = tau_before_rejections;
       }
-    else if (previous_rate > 0 && (judge_law ? law_rise : rise) > 0 &&
-             (judge_law ? law_rise : rise) / tau > 0.5 * previous_rate)
+    else if (previous_rate > 0 && judged_rise > 0 && judged_rise / tau > 0.5 * previous_rate)
       {
         // The retry after a rejection passed, but its rise rate hardly fell with τ: the rejection
         // did not remove a time-step error, so τ returns to its value before the rejections (otherwise
