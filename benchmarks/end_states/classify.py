@@ -13,7 +13,9 @@ one of m ≥ 1 two (cos mφ, sin mφ); |λ| ≤ 1e-7 (the rigid tilt at rest) is
   F equilibrium   the energy of that equilibrium
   F - F_eq        the run's F minus it (the spatial error of the run at its refinement, if it is that state)
   negative        the negative eigenvalues as m/parity:λ
-  class           minimum | saddle (k directions) | "scene stability" (3D: not classified here) | not steady
+  class           minimum | saddle (k directions) | "scene stability" (3D: not classified here) | not steady;
+                  "plateau at a …" for a run that stopped at a plateau (F flat while the flow dissipates: held by
+                  the discretization, not an end state of the model; doc/scheme.md, "Steady state")
 """
 import csv
 import os
@@ -27,7 +29,7 @@ exe = sys.argv[3] if len(sys.argv) > 3 else os.path.join(here, "..", "..", "buil
 
 
 def branch_of(row):
-    if row.get("status") != "steady":
+    if row.get("status") not in ("steady", "plateau"):
         return None
     tilt = float(row["tilt angle"])
     if row["shape"] == "oblate" and (tilt > 80 or float(row["L0"]) == 0):
@@ -78,6 +80,11 @@ for row in rows:
     row["F - F_eq"] = f"{float(row['F']) - energy:.2e}"
     row["negative"] = " ".join(f"{m}/{p}:{value:.4g}" for m, p, value in negative)
     row["class"] = "minimum" if directions == 0 else f"saddle ({directions} directions)"
+
+for row in rows:
+    # The state a plateau holds is classified too, but it is not an end state of the model at this refinement.
+    if row.get("status") == "plateau":
+        row["class"] = "plateau at a " + row["class"].replace("scene stability", "3D state (scene stability)")
 
 fields = list(rows[0].keys())
 with open(sys.argv[2], "w", newline="") as f:

@@ -4,7 +4,7 @@
     /usr/bin/python3 benchmarks/end_states/table.py WORK results.csv
 Columns: v, L0 (nominal), start, F, W, omega, lambda1 ≤ lambda2 ≤ lambda3 (inertia eigenvalues), rigid fraction,
 end time, shape, tilt angle (degrees between the rotation vector and the axis of least inertia: 90 for a body
-rotating about a transverse axis), status (steady | not steady | stopped: …), L0 measured (|L| at t = 0).
+rotating about a transverse axis), status (steady | plateau: F flat while the flow dissipates, held by the discretization | not steady | stopped: …), L0 measured (|L| at t = 0).
 shape, from the inertia eigenvalues with δ = 1e-2 relative to λ₃:
   sphere      λ₃ − λ₁ < δλ₃
   prolate     λ₃ − λ₂ < δλ₃: elongated, nearly a body of revolution about the axis of least inertia
@@ -56,6 +56,8 @@ for prm in sorted(glob.glob(os.path.join(sys.argv[1], "v*_L*_*.prm"))):
     status = "not steady"
     if "steady state: reached" in summary:
         status = "steady"
+    elif "steady state: plateau" in summary:
+        status = "plateau"
     elif summary.startswith("status: stopped"):
         status = "stopped: " + summary.splitlines()[0][len("status: "):].replace(",", ";")
     L0m = math.sqrt(sum(c[f"angular momentum {d}"][0] ** 2 for d in "xyz"))

@@ -23,7 +23,10 @@ namespace FluidSurface
                       "and the inertia eigenvalues λ_i are flat, |F(t) − F(t − T_w)| < δ T_w |F(t)| and "
                       "|λ_i(t) − λ_i(t − T_w)| < δ T_w λ₃(t), and the kinetic energy exceeds |L|²/(2λ₃) by less "
                       "than ε_K |F| (a rigid rotation about the axis of largest inertia, the only terminal state "
-                      "with angular momentum L). 0: run to the end time.");
+                      "with angular momentum L), and the flow dissipates less than δ|F| per unit time (∫D < δ T_w "
+                      "|F| over the window). A state that passes every test but the last is a plateau: F is flat "
+                      "only because the discretization supplies what the flow dissipates, and the run stops there "
+                      "with `steady state: plateau` in its summary. 0: run to the end time.");
     prm.declare_entry("window",
                       "1",
                       RealRange::left_open(0, 1e6),
@@ -55,11 +58,13 @@ namespace FluidSurface
     prm.leave_subsection();
   }
 
-  bool
-  SteadyState::reached(const Sample &sample, const double kinetic_excess)
+  SteadyState::Verdict
+  SteadyState::assess(Sample sample, const double kinetic_excess, const double tau, const double dissipation_rate)
   {
     if (!enabled())
-      return false;
+      return Verdict::running;
+    dissipated += tau * dissipation_rate;
+    sample.dissipated = dissipated;
     if (samples.empty() || sample.time - samples.back().time >= window / 20)
       samples.push_back(sample);
     // Keep one sample at or before t − T_w.
@@ -68,7 +73,7 @@ namespace FluidSurface
     const Sample &old      = samples.front();
     const double  duration = sample.time - old.time;
     if (duration < window)
-      return false;
+      return Verdict::running;
     last_energy_rate  = std::abs(sample.total_energy - old.total_energy) / (duration * std::abs(sample.total_energy));
     last_inertia_rate = 0;
     for (unsigned int i = 0; i < 3; ++i)
@@ -79,8 +84,11 @@ namespace FluidSurface
       return std::min(s.inertia[1] - s.inertia[0], s.inertia[2] - s.inertia[1]) / s.inertia[2];
     };
     last_gap_growth = gap(old) > 1e-12 && gap(sample) > 0 ? std::log(gap(sample) / gap(old)) / duration : 0.0;
-    return last_energy_rate < rate_tolerance && last_inertia_rate < rate_tolerance &&
-           last_kinetic_excess < kinetic_excess_tolerance && last_gap_growth < gap_growth_tolerance;
+    last_dissipation = (sample.dissipated - old.dissipated) / (duration * std::abs(sample.total_energy));
+    if (!(last_energy_rate < rate_tolerance && last_inertia_rate < rate_tolerance &&
+          last_kinetic_excess < kinetic_excess_tolerance && last_gap_growth < gap_growth_tolerance))
+      return Verdict::running;
+    return last_dissipation < rate_tolerance ? Verdict::reached : Verdict::plateau;
   }
 
   std::string
@@ -91,7 +99,7 @@ namespace FluidSurface
          << ", max |Δλ_i|/(T_w λ₃) = " << last_inertia_rate << " < δ = " << rate_tolerance
          << " over T_w = " << window << ", (K − |L|²/(2λ₃))/|F| = " << last_kinetic_excess
          << " < ε_K = " << kinetic_excess_tolerance << ", growth of the closest eigenvalues' gap " << last_gap_growth
-         << " < σ_s = " << gap_growth_tolerance;
+         << " < σ_s = " << gap_growth_tolerance << ", ∫D/(T_w |F|) = " << last_dissipation;
     return text.str();
   }
 
@@ -99,11 +107,13 @@ namespace FluidSurface
   SteadyState::save(CheckpointData &data) const
   {
     data.set("steady state/samples", static_cast<unsigned int>(samples.size()));
+    data.set("steady state/dissipated", dissipated);
     for (unsigned int k = 0; k < samples.size(); ++k)
       {
         const std::string key = "steady state/" + std::to_string(k) + "/";
         data.set(key + "time", samples[k].time);
         data.set(key + "total energy", samples[k].total_energy);
+        data.set(key + "dissipated", samples[k].dissipated);
         for (unsigned int i = 0; i < 3; ++i)
           data.set(key + "inertia " + std::to_string(i), samples[k].inertia[i]);
       }
@@ -113,13 +123,17 @@ namespace FluidSurface
   SteadyState::load(const CheckpointData &data)
   {
     samples.clear();
-    // Checkpoints written before this check existed have no samples: the window starts again.
-    if (!data.has("steady state/samples"))
+    dissipated = 0;
+    // Checkpoints written before this check (or before its dissipation) have no samples (or no ∫D): the window
+    // starts again.
+    if (!data.has("steady state/samples") || !data.has("steady state/dissipated"))
       return;
+    dissipated = data.get_double("steady state/dissipated");
     for (unsigned int k = 0; k < data.get_unsigned("steady state/samples"); ++k)
       {
         const std::string key = "steady state/" + std::to_string(k) + "/";
-        Sample            sample{data.get_double(key + "time"), data.get_double(key + "total energy"), {}};
+        Sample sample{data.get_double(key + "time"), data.get_double(key + "total energy"), {},
+                      data.get_double(key + "dissipated")};
         for (unsigned int i = 0; i < 3; ++i)
           sample.inertia[i] = data.get_double(key + "inertia " + std::to_string(i));
         samples.push_back(sample);

@@ -31,8 +31,14 @@ namespace FluidSurface
    * of the two closest eigenvalues must also not grow faster than σ_s,
    * ln(g(t)/g(t − T_w))/T_w < σ_s, once g(t − T_w) is above the rounding of
    * the eigenvalues: a growing mode that breaks the symmetry of a body of
-   * revolution makes the state a saddle, not an end state (issue 49). The
-   * samples inside the window are part of a checkpoint.
+   * revolution makes the state a saddle, not an end state (issue 49). Last,
+   * an end state of a dissipative flow dissipates nothing: the flow must
+   * dissipate less than δ|F| per unit time over the window, ∫D < δ T_w |F|.
+   * A state that meets every other test while D is larger is a plateau: F
+   * stays flat only because the discretization supplies what the flow
+   * dissipates (on coarse meshes, doc/scheme.md, "The discrete energy law"),
+   * so the run stops there and says so instead of calling it an end state.
+   * The samples inside the window are part of a checkpoint.
    */
   class SteadyState
   {
@@ -55,14 +61,24 @@ namespace FluidSurface
       double time, total_energy;
       /// The inertia eigenvalues λ₁ ≤ λ₂ ≤ λ₃.
       std::array<double, 3> inertia;
+      /// ∫₀ᵗ D, the sum of τD^{m+1} over the accepted steps (set by assess()).
+      double dissipated = 0;
+    };
+
+    /// What assess() finds.
+    enum class Verdict
+    {
+      running, ///< not yet an end state
+      reached, ///< an end state: every test passes
+      plateau  ///< every test but the dissipation's passes: F is flat while the flow dissipates
     };
 
     /**
-     * Records the accepted state @p sample with kinetic energy excess @p kinetic_excess = K − |L|²/(2λ₃);
-     * returns whether the end state is reached.
+     * Records the accepted state @p sample, reached by a step of size @p tau whose flow dissipates at the rate
+     * @p dissipation_rate, with kinetic energy excess @p kinetic_excess = K − |L|²/(2λ₃).
      */
-    bool
-    reached(const Sample &sample, const double kinetic_excess);
+    Verdict
+    assess(Sample sample, const double kinetic_excess, const double tau, const double dissipation_rate);
 
     /// The measures of the last reached() as one line, for the screen and the summary.
     std::string
@@ -82,6 +98,9 @@ namespace FluidSurface
     double last_kinetic_excess       = 0;
     double gap_growth_tolerance      = 0.01;
     double last_gap_growth           = 0;
+    double last_dissipation          = 0;
+    /// ∫₀ᵗ D of the accepted steps so far.
+    double dissipated = 0;
     /// At least T_w/20 apart, the oldest at or before t − T_w.
     std::vector<Sample> samples;
   };
