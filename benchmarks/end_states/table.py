@@ -4,7 +4,9 @@
     /usr/bin/python3 benchmarks/end_states/table.py WORK results.csv
 Columns: v, L0 (nominal), start, F, W, omega, lambda1 ≤ lambda2 ≤ lambda3 (inertia eigenvalues), rigid fraction,
 end time, shape, tilt angle (degrees between the rotation vector and the axis of least inertia: 90 for a body
-rotating about a transverse axis), status (steady | plateau: F flat while the flow dissipates, held by the discretization | not steady | stopped: …), L0 measured (|L| at t = 0).
+rotating about a transverse axis), status (steady | plateau: F flat while the flow dissipates, held by the
+discretization | not steady | stopped: …), L0 measured (|L| at t = 0), end dissipation (rel.) (∫D over the last
+unit of time over |F|: a run that stopped "steady" with it ≥ 1e-6, the steady-state test's δ, is a plateau).
 shape, from the inertia eigenvalues with δ = 1e-2 relative to λ₃:
   sphere      λ₃ − λ₁ < δλ₃
   prolate     λ₃ − λ₂ < δλ₃: elongated, nearly a body of revolution about the axis of least inertia
@@ -59,22 +61,33 @@ for prm in sorted(glob.glob(os.path.join(sys.argv[1], "v*_L*_*.prm"))):
     elif "steady state: plateau" in summary:
         status = "plateau"
     elif summary.startswith("status: stopped"):
-        status = "stopped: " + summary.splitlines()[0][len("status: "):].replace(",", ";")
+        # Without the checkpoint's path: the run is named by its prm.
+        status = "stopped: " + summary.splitlines()[0][len("status: "):].split("; checkpoint written to")[0].replace(",", ";")
+    # The dissipation over the last unit of time (the steady-state window of run.sh) relative to |F|, as the steady
+    # state's dissipation test takes it (Σ τD^{m+1}); a run of a build before that test that stopped "steady" with
+    # it at or above δ = 1e-6 stopped at a plateau.
+    t, D, tau = c["time"], c["dissipation rate"], c["tau"]
+    window = [k for k in range(len(t)) if t[k] > t[-1] - 1]
+    span = t[-1] - t[window[0] - 1] if window and window[0] > 0 else 0
+    end_dissipation = sum(tau[k] * D[k] for k in window) / (span * abs(c["total energy"][-1])) if span > 0 else float("nan")
+    if status == "steady" and not end_dissipation < 1e-6:
+        status = "plateau"
     L0m = math.sqrt(sum(c[f"angular momentum {d}"][0] ** 2 for d in "xyz"))
     row.update({
         "F": f"{c['total energy'][-1]:.8g}", "W": f"{c['bending energy'][-1]:.8g}",
         "omega": f"{c['angular velocity'][-1]:.6g}",
         "lambda1": f"{lam[0]:.6g}", "lambda2": f"{lam[1]:.6g}", "lambda3": f"{lam[2]:.6g}",
         "rigid fraction": f"{c['rigid fraction'][-1]:.6f}", "end time": f"{c['time'][-1]:.6g}",
-        "shape": shape_class(*lam), "tilt angle": f"{c['tilt angle'][-1]:.3g}", "status": status, "L0 measured": f"{L0m:.6g}"})
+        "shape": shape_class(*lam), "tilt angle": f"{c['tilt angle'][-1]:.3g}", "status": status, "L0 measured": f"{L0m:.6g}",
+        "end dissipation (rel.)": f"{end_dissipation:.2e}"})
     _, _, _, rise, _, _, breaking, _, excess = budget(run)
     row.update({"max rise of B (rel.)": f"{rise:.2e}", "steps breaking the law": breaking,
                 "largest excess over the bound": f"{excess:.2e}"})
     rows.append(row)
 
 fields = ["v", "L0", "start", "F", "W", "omega", "lambda1", "lambda2", "lambda3", "rigid fraction", "end time",
-          "shape", "tilt angle", "status", "L0 measured", "max rise of B (rel.)", "steps breaking the law",
-          "largest excess over the bound"]
+          "shape", "tilt angle", "status", "L0 measured", "end dissipation (rel.)", "max rise of B (rel.)",
+          "steps breaking the law", "largest excess over the bound"]
 with open(sys.argv[2], "w", newline="") as f:
     w = csv.DictWriter(f, fieldnames=fields)
     w.writeheader()

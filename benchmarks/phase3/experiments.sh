@@ -29,5 +29,5 @@ done
     status=$(awk -F': ' 'NR == 1 {print $2}' $s)
     /usr/bin/python3 $here/summarize.py ${s%.summary}.statistics "prm/${case%_r[0-9]}.prm (refinement ${case##*_r})" \
       $([ "$status" = completed ] && echo 0 || echo 1) "$(awk -F': ' '/^wall time/ {print $2}' $s)" \
-      "$(awk -F': ' '/^steady state: reached/ {print "steady state"}' $s)${status#completed}"
+      "$(awk -F': ' '/^steady state: reached/ {print "steady state"} /^steady state: plateau/ {print "plateau (not an end state)"}' $s)${status#completed}"
   done; } > $here/experiments.csv
