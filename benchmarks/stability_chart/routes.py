@@ -55,7 +55,7 @@ for key in sorted(leading):
     Lc, how = zero(points)
     a = chart.get((branch, v))
     sigmas = ", ".join(f"{L:g}: {s:+.5f} ({w:.1e})" for L, (s, w, _) in sorted(leading[key].items()))
-    La = f"{a[0]:.4f} ({a[2]})" if a else "—"
+    La = f"{a[0]:.4f}" if a else "—"
     diff = f"{Lc / a[0] - 1:+.4f}" if a and a[0] > 0 else "—"
     lines.append(f"| {branch} | {v:g} | {classes[key]} | {r} | {tau:g} | {sigmas} | {Lc:.4f} | {how} | {La} | {diff} |")
 text = "\n".join(lines) + "\n"
