@@ -80,7 +80,7 @@ namespace FluidSurface
     Verdict
     assess(Sample sample, const double kinetic_excess, const double tau, const double dissipation_rate);
 
-    /// The measures of the last reached() as one line, for the screen and the summary.
+    /// The measures of the last assess() as one line, for the screen and the summary.
     std::string
     description() const;
 
