@@ -42,10 +42,6 @@ run_one() { "$exe" "$work/$1.prm" > "$work/$1.log" 2>&1; echo "$1 exit $?"; }
 export -f run_one; export exe work
 echo "$queue" | xargs -P "${JOBS:-1}" -I{} bash -c 'run_one {}'
 out=${OUT:-$work/linearized.csv}
-head -n 1 "$work/$(echo "$queue" | head -n 1)/spectrum.csv" 2>/dev/null | sed 's/^/shape,refinement,tau,Re,frame,/' > "$out"
-for name in $queue; do
-  [ -f "$work/$name/spectrum.csv" ] || { echo "$name: no spectrum.csv"; continue; }
-  settings=$(echo "$name" | sed 's/^stability_\([a-z]*\)_r\([0-9]*\)_tau\([0-9.e-]*\)_Re\([0-9.]*\)_\([A-Za-z]*\)$/\1,\2,\3,\4,\5/')
-  tail -n +2 "$work/$name/spectrum.csv" | sed "s/^/$settings,/" >> "$out"
-done
-cat "$out"
+# shellcheck disable=SC2086
+bash $here/collect_spectra.sh "$work" "$out" shape,refinement,tau,Re,frame \
+  's/^stability_\([a-z]*\)_r\([0-9]*\)_tau\([0-9.e-]*\)_Re\([0-9.]*\)_\([A-Za-z]*\)$/\1,\2,\3,\4,\5/' $queue

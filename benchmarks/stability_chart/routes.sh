@@ -34,11 +34,6 @@ done; done; done)
 run_one() { [ -f "$work/$1/spectrum.csv" ] || "$exe" "$work/$1.prm" > "$work/$1.log" 2>&1; echo "$1 exit $?"; }
 export -f run_one; export exe work
 echo "$queue" | xargs -P "${JOBS:-1}" -I{} bash -c 'run_one {}'
-out=$work/routes_stability.csv
-echo "branch,v,L,refinement,tau,$(head -n 1 "$work/$(echo "$queue" | head -n 1)/spectrum.csv")" > "$out"
-for name in $queue; do
-  [ -f "$work/$name/spectrum.csv" ] || { echo "$name: no spectrum.csv"; continue; }
-  settings=$(echo "$name" | sed 's/^route_\([a-z]*\)_v\([0-9.]*\)_L\([0-9.]*\)_r\([0-9]*\)_tau\([0-9.e-]*\)_.*$/\1,\2,\3,\4,\5/')
-  tail -n +2 "$work/$name/spectrum.csv" | sed "s/^/$settings,/" >> "$out"
-done
-cat "$out"
+# shellcheck disable=SC2086
+bash benchmarks/spectrum/collect_spectra.sh "$work" "$work/routes_stability.csv" branch,v,L,refinement,tau \
+  's/^route_\([a-z]*\)_v\([0-9.]*\)_L\([0-9.]*\)_r\([0-9]*\)_tau\([0-9.e-]*\)_.*$/\1,\2,\3,\4,\5/' $queue
