@@ -2,7 +2,8 @@
 // The histories of the second-order schemes survive a checkpoint: BDF2 and SDIRK2 in the Tisserand frame (the
 // rotating prolate of checkpoint_common.h, adaptive τ from 0.01, t ∈ [0, 0.06]). Run A goes through without stopping;
 // run B stops after 3 steps ('steps per run') and is resumed. Both write a checkpoint every 3 steps, so with
-// the factorization kept across steps (dropped at each checkpoint) they solve with the same factors: the
+// the factorization kept across steps (dropped at each checkpoint, with the last solution GMRES starts from) and
+// single-precision factors (every solve GMRES) they solve with the same factors from the same guesses: the
 // statistics and summaries of A and B must be identical apart from the wall time.
 #include "checkpoint_common.h"
 
@@ -22,6 +23,7 @@ main(int argc, char **argv)
                                 {"geometry iteration/maximum iterations", "1"},
                                 {"geometry iteration/tolerance", "0"},
                                 {"linear solver/reuse factorization", "true"},
+                                {"linear solver/factor precision", "single"},
                                 {"checkpoint/steps between checkpoints", "3"}};
       const Outcome a = run("A", common);
       if (a.status != 0)

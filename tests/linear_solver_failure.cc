@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // A factorization that fails (a singular matrix: all entries zero) is reported as one LinearSolverError whose
 // message names the solver and the stage, on one line; what Amesos prints on std::cerr and the Trilinos
-// exception go into its details (for error.log), nothing onto the screen. Amesos_Klu and Amesos_Mumps.
+// exception go into its details (for error.log), nothing onto the screen. Amesos_Klu, and Amesos_Mumps with
+// double- and single-precision factors (SinglePrecisionLU reports MUMPS' INFOG(1)).
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -14,6 +15,8 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace FluidSurface;
 
@@ -32,9 +35,12 @@ main(int argc, char **argv)
   dealii::TrilinosWrappers::MPI::Vector x(owned, MPI_COMM_WORLD), b(owned, MPI_COMM_WORLD);
   b = 1.0;
 
-  for (const std::string package : {"Amesos_Klu", "Amesos_Mumps"})
+  for (const auto &[package, precision] : std::vector<std::pair<std::string, std::string>>{
+         {"Amesos_Klu", "double"}, {"Amesos_Mumps", "double"}, {"Amesos_Mumps", "single"}})
     {
-      ReusedFactorizationSolver   solver(package);
+      ReusedFactorizationSolver::Parameters parameters;
+      parameters.factor_precision = precision;
+      ReusedFactorizationSolver   solver(package, parameters);
       FactorizationPreconditioner preconditioner;
       std::ostringstream          screen;
       std::streambuf             *cerr_buffer = std::cerr.rdbuf(screen.rdbuf());
@@ -42,16 +48,20 @@ main(int argc, char **argv)
         {
           solver.solve(matrix, matrix, x, b, preconditioner);
           std::cerr.rdbuf(cerr_buffer);
-          std::cout << package << ": no failure" << std::endl;
+          std::cout << package << " (" << precision << "): no failure" << std::endl;
         }
       catch (const LinearSolverError &error)
         {
           std::cerr.rdbuf(cerr_buffer);
           const std::string message = error.what();
-          std::cout << package << ": " << message << '\n'
+          std::cout << package << " (" << precision << "): " << message << '\n'
                     << "  one line: " << (message.find('\n') == std::string::npos ? "yes" : "no") << '\n'
-                    << "  details name the Trilinos error: "
-                    << (error.details().find("Trilinos") != std::string::npos ? "yes" : "no") << '\n'
+                    << "  details name the solver's error: "
+                    << (error.details().find("Trilinos") != std::string::npos ||
+                            error.details().find("INFOG(1)") != std::string::npos ?
+                          "yes" :
+                          "no")
+                    << '\n'
                     << "  printed on std::cerr meanwhile: " << (screen.str().empty() ? "nothing" : screen.str())
                     << std::endl;
         }

@@ -438,8 +438,9 @@ namespace FluidSurface
                       "the run that wrote the checkpoint would have: bit for bit on one MPI rank, to rounding on "
                       "several (as two uninterrupted parallel runs differ), also on a different number of ranks "
                       "than the checkpoint's. The factorization kept across steps (linear solver/reuse "
-                      "factorization) is dropped at every checkpoint, so a run that writes no checkpoints "
-                      "differs from one that does at the linear solver tolerance.");
+                      "factorization) and the last solution, GMRES's initial guess, are dropped at every "
+                      "checkpoint, so a run that writes no checkpoints differs from one that does at the linear "
+                      "solver tolerance.");
     prm.declare_entry("steps per run",
                       "0",
                       Patterns::Integer(0),

@@ -4,6 +4,7 @@
 #include <deal.II/lac/exceptions.h>
 
 #include <fluid_surface/linear_algebra/amesos_factorization.h>
+#include <fluid_surface/linear_algebra/single_precision_lu.h>
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
@@ -85,6 +86,7 @@ namespace FluidSurface
   void
   AmesosFactorization::destroy_solver()
   {
+    single.reset();
     if (solver)
       {
         if (!placeholder)
@@ -104,9 +106,50 @@ namespace FluidSurface
   bool
   AmesosFactorization::analysis_fits(const Epetra_CrsMatrix &matrix, const std::uint64_t pattern_hash) const
   {
-    const bool fits_here = solver && analysed == &matrix && analysed_hash == pattern_hash;
+    const bool fits_here = (solver || single) && analysed == &matrix && analysed_hash == pattern_hash;
     const auto &mpi_comm = dynamic_cast<const Epetra_MpiComm &>(matrix.Comm());
     return dealii::Utilities::MPI::min(fits_here ? 1 : 0, mpi_comm.GetMpiComm()) == 1;
+  }
+
+  void
+  AmesosFactorization::analyse(const Epetra_CrsMatrix &epetra)
+  {
+    if (options.single_precision)
+      {
+        single = std::make_unique<SinglePrecisionLU>(epetra, options.mumps_ordering);
+        single->analyse(epetra);
+        return;
+      }
+    comm.reset(epetra.Comm().Clone());
+    placeholder.reset();
+    empty_map.reset();
+    problem = std::make_unique<Epetra_LinearProblem>();
+    problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&epetra));
+    Teuchos::ParameterList parameters;
+    if (options.package == "Amesos_Mumps")
+      {
+        solver = std::make_unique<MumpsSolver>(*problem);
+        Teuchos::ParameterList &mumps = parameters.sublist("mumps");
+        mumps.set("ICNTL(7)", options.mumps_ordering);
+        if (options.low_rank_tolerance > 0)
+          mumps.set("ICNTL(35)", 2);
+      }
+    else
+      {
+        Amesos factory;
+        AssertThrow(factory.Query(options.package.c_str()),
+                    ExcMessage("The Amesos package " + options.package + " is not available."));
+        solver.reset(factory.Create(options.package.c_str(), *problem));
+      }
+    solver->SetParameters(parameters);
+    const int ierr = solver->SymbolicFactorization();
+    if (ierr != 0)
+      {
+        destroy_solver();
+        AssertThrow(false, ExcTrilinosError(ierr));
+      }
+    if (auto *mumps = dynamic_cast<MumpsSolver *>(solver.get()); mumps && options.low_rank_tolerance > 0)
+      mumps->set_cntl(7, options.low_rank_tolerance);
   }
 
   void
@@ -121,42 +164,18 @@ namespace FluidSurface
         if (timer)
           section.emplace(*timer, "symbolic factorization");
         destroy_solver();
-        comm.reset(epetra.Comm().Clone());
-        placeholder.reset();
-        empty_map.reset();
-        problem = std::make_unique<Epetra_LinearProblem>();
-        problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&epetra));
-        Teuchos::ParameterList parameters;
-        if (options.package == "Amesos_Mumps")
-          {
-            solver = std::make_unique<MumpsSolver>(*problem);
-            Teuchos::ParameterList &mumps = parameters.sublist("mumps");
-            mumps.set("ICNTL(7)", options.mumps_ordering);
-            if (options.low_rank_tolerance > 0)
-              mumps.set("ICNTL(35)", 2);
-          }
-        else
-          {
-            Amesos factory;
-            AssertThrow(factory.Query(options.package.c_str()),
-                        ExcMessage("The Amesos package " + options.package + " is not available."));
-            solver.reset(factory.Create(options.package.c_str(), *problem));
-          }
-        solver->SetParameters(parameters);
-        const int ierr = solver->SymbolicFactorization();
-        if (ierr != 0)
-          {
-            destroy_solver();
-            AssertThrow(false, ExcTrilinosError(ierr));
-          }
-        if (auto *mumps = dynamic_cast<MumpsSolver *>(solver.get()); mumps && options.low_rank_tolerance > 0)
-          mumps->set_cntl(7, options.low_rank_tolerance);
+        analyse(epetra);
         analysed      = &epetra;
         analysed_hash = hash;
         ++symbolic_count;
       }
-    const int ierr = solver->NumericFactorization();
-    AssertThrow(ierr == 0, ExcTrilinosError(ierr));
+    if (single)
+      single->factorize(epetra);
+    else
+      {
+        const int ierr = solver->NumericFactorization();
+        AssertThrow(ierr == 0, ExcTrilinosError(ierr));
+      }
     factorized = true;
     ++numeric_count;
   }
@@ -165,6 +184,12 @@ namespace FluidSurface
   AmesosFactorization::solve(TrilinosWrappers::MPI::Vector &dst, const TrilinosWrappers::MPI::Vector &src)
   {
     Assert(factorized, ExcNotInitialized());
+    if (single)
+      {
+        dst = src;
+        single->solve(dst.trilinos_vector());
+        return;
+      }
     problem->SetLHS(&dst.trilinos_vector());
     problem->SetRHS(const_cast<Epetra_MultiVector *>(static_cast<const Epetra_MultiVector *>(&src.trilinos_vector())));
     const int ierr = solver->Solve();
@@ -187,7 +212,16 @@ namespace FluidSurface
           (*change)(dst[k], true);
       }
     auto *mumps = dynamic_cast<MumpsSolver *>(solver.get());
-    if (mumps == nullptr || comm->NumProc() != 1 || n_columns < 2)
+    if (single && n_columns > 0)
+      {
+        Epetra_MultiVector columns(dst[0].trilinos_vector().Map(), n_columns);
+        for (unsigned int k = 0; k < n_columns; ++k)
+          std::copy(dst[k].begin(), dst[k].end(), columns[k]);
+        single->solve(columns);
+        for (unsigned int k = 0; k < n_columns; ++k)
+          std::copy(columns[k], columns[k] + columns.MyLength(), dst[k].begin());
+      }
+    else if (mumps == nullptr || comm->NumProc() != 1 || n_columns < 2)
       for (auto &column : dst)
         {
           const TrilinosWrappers::MPI::Vector right_hand_side(column);

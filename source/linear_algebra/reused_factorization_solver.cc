@@ -52,6 +52,23 @@ namespace FluidSurface
                       Patterns::Selection("default|Amesos_Klu|Amesos_Mumps"),
                       "Amesos package of the LU factorizations. default: Amesos_Mumps in scene full, "
                       "Amesos_Klu in scene fixed surface.");
+    prm.declare_entry("low rank tolerance",
+                      Patterns::Tools::to_string(defaults.low_rank_tolerance),
+                      RealRange::closed(0, 1e-2),
+                      "Dropping threshold ε_BLR, 0 ≤ ε_BLR ≤ 1e-2, of MUMPS' block-low-rank factorization (with "
+                      "Amesos_Mumps): off-diagonal blocks of the fronts are compressed to rank-revealing products "
+                      "accurate to ε_BLR, in the factorization and in the substitutions; the factors are then those "
+                      "of a matrix within about ε_BLR of the step's and precondition GMRES, which reaches the "
+                      "`tolerance` as before. 0: full-rank factors.");
+    prm.declare_entry("factor precision",
+                      defaults.factor_precision,
+                      Patterns::Selection("double|single"),
+                      "Floating-point precision of the LU factors of Amesos_Mumps (Amesos_Klu factorizes in "
+                      "double). single: MUMPS' factorization of the matrix rounded to single precision, always "
+                      "the preconditioner of flexible GMRES, which works in double precision and reaches "
+                      "`tolerance` also on the step whose matrix was factorized; half the memory and memory "
+                      "traffic of the factors (doc/scheme.md, \"Single-precision factors\"). double: the factors "
+                      "in double precision; a solve with the factors of the step's own matrix is then direct.");
     prm.leave_subsection();
   }
 
@@ -64,6 +81,8 @@ namespace FluidSurface
     tolerance            = prm.get_double("tolerance");
     step_change          = prm.get_double("factorize on step change");
     direct_solver        = prm.get("direct solver");
+    low_rank_tolerance   = prm.get_double("low rank tolerance");
+    factor_precision     = prm.get("factor precision");
     prm.leave_subsection();
   }
 
@@ -124,7 +143,9 @@ namespace FluidSurface
     if (!factorization)
       {
         AmesosFactorization::Options options;
-        options.package = direct_solver();
+        options.package            = direct_solver();
+        options.low_rank_tolerance = parameters.low_rank_tolerance;
+        options.single_precision   = parameters.factor_precision == "single" && options.package == "Amesos_Mumps";
         factorization   = std::make_unique<AmesosFactorization>(options);
       }
     factorization->factorize(matrix, step_timer);
@@ -150,11 +171,25 @@ namespace FluidSurface
     // Right preconditioning: GMRES measures the true residual ‖b − Kx‖. A basis of max_reuse_iterations
     // vectors: the solve is abandoned before GMRES would restart.
     SolverControl control(parameters.max_reuse_iterations, parameters.tolerance * b.l2_norm());
-    typename SolverGMRES<VectorType>::AdditionalData data(parameters.max_reuse_iterations + 2, true);
-    SolverGMRES<VectorType>                          gmres(control, data);
     try
       {
-        gmres.solve(system, x, b, preconditioner);
+        // Single-precision factors round their input: the preconditioner is not linear to double precision,
+        // and GMRES, which applies it once more to the combination of its basis, would miss the residual it
+        // reports by about that rounding. Flexible GMRES keeps the preconditioned vectors instead.
+        if (factorization->rounds_to_single())
+          {
+            SolverFGMRES<VectorType> fgmres(control,
+                                            typename SolverFGMRES<VectorType>::AdditionalData(
+                                              parameters.max_reuse_iterations + 2));
+            fgmres.solve(system, x, b, preconditioner);
+          }
+        else
+          {
+            SolverGMRES<VectorType> gmres(control,
+                                          typename SolverGMRES<VectorType>::AdditionalData(
+                                            parameters.max_reuse_iterations + 2, true));
+            gmres.solve(system, x, b, preconditioner);
+          }
         iterations = control.last_step();
         return true;
       }
@@ -205,6 +240,16 @@ namespace FluidSurface
             stage = "the " + direct_solver() + " factorization";
             factorize(matrix);
             result.factorized = true;
+          }
+        // Single-precision or low-rank factors of this very matrix are still a preconditioner only.
+        if (!factorization->exact())
+          {
+            stage = "the GMRES solve preconditioned by the fresh approximate " + direct_solver() + " factors";
+            AssertThrow(solve_with_kept_factors(system, x, b, preconditioner, result.iterations),
+                        ExcMessage("GMRES preconditioned by the approximate factors of the step's own matrix did "
+                                   "not reach 'linear solver/tolerance' in 'max reuse iterations' iterations; "
+                                   "set 'factor precision = double' and 'low rank tolerance = 0'"));
+            return result;
           }
         stage = "the direct solve with the " + direct_solver() + " factors";
         std::optional<TimerOutput::Scope> section;

@@ -441,9 +441,12 @@ namespace FluidSurface
         written = write_checkpoint();
         if (written)
           last_checkpoint_step = time.step_number();
-        // A resumed run starts without the factorization kept across steps; dropping it here too
-        // makes the step after a checkpoint factorize in both, so that they agree bit for bit.
+        // A resumed run starts without the factorization kept across steps and without the last solution;
+        // dropping both here too makes the step after a checkpoint factorize and start GMRES (with
+        // single-precision factors a solve is GMRES also right after a factorization) from the same guess in
+        // both, so that they agree bit for bit.
         model.step().solver().release_factorization();
+        model.step().solver().forget_last_solution();
       }
     if (!stop)
       return;

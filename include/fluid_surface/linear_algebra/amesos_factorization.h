@@ -19,6 +19,8 @@ class Epetra_Map;
 
 namespace FluidSurface
 {
+  class SinglePrecisionLU;
+
   /**
    * A sparse LU factorization PAQ = LU of a TrilinosWrappers::SparseMatrix by an Amesos package (Amesos_Klu,
    * Amesos_Mumps), split into the symbolic analysis (fill-reducing ordering, elimination tree, memory) and
@@ -40,6 +42,7 @@ namespace FluidSurface
       std::string package            = "Amesos_Mumps";
       int         mumps_ordering     = 7;   ///< ICNTL(7); 7: MUMPS chooses
       double      low_rank_tolerance = 0.0; ///< CNTL(7) of the block-low-rank factorization; 0: full rank
+      bool        single_precision   = false; ///< Amesos_Mumps only: the factors in single precision (SinglePrecisionLU)
     };
 
     explicit AmesosFactorization(const Options &options);
@@ -78,6 +81,22 @@ namespace FluidSurface
     solve(std::vector<dealii::TrilinosWrappers::MPI::Vector>              &dst,
           const std::vector<const dealii::TrilinosWrappers::MPI::Vector *> &src,
           const ChangeOfVariables                                          *change);
+    /// Whether the factors are those of the matrix to round-off in double precision (not single precision,
+    /// not block low rank): a solve with them is a direct solve, not only a preconditioner.
+    bool
+    exact() const
+    {
+      return !options.single_precision && options.low_rank_tolerance == 0;
+    }
+
+    /// Whether a solve rounds its input and output to single precision (`single_precision`): a preconditioner
+    /// that is linear only to that precision.
+    bool
+    rounds_to_single() const
+    {
+      return options.single_precision;
+    }
+
     /// Whether factorize() succeeded since construction or the last failure.
     bool
     has_factors() const
@@ -99,6 +118,9 @@ namespace FluidSurface
     }
 
   private:
+    /// The symbolic analysis of @p matrix by a new solver (collective); throws if it fails.
+    void
+    analyse(const Epetra_CrsMatrix &matrix);
     /// Whether the analysis of the kept solver is that of @p matrix (collective).
     bool
     analysis_fits(const Epetra_CrsMatrix &matrix, std::uint64_t pattern_hash) const;
@@ -110,6 +132,7 @@ namespace FluidSurface
     Options                               options;
     std::unique_ptr<Epetra_LinearProblem> problem;
     std::unique_ptr<Amesos_BaseSolver>    solver;
+    std::unique_ptr<SinglePrecisionLU>    single;        ///< the factors of `single_precision`
     std::unique_ptr<Epetra_Comm>          comm;          ///< a copy of the analysed matrix's communicator
     std::unique_ptr<Epetra_Map>           empty_map;     ///< of the placeholder matrix
     std::unique_ptr<Epetra_CrsMatrix>     placeholder;   ///< empty, on `comm`: the operator while destroying

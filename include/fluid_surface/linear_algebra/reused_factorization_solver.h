@@ -58,6 +58,8 @@ namespace FluidSurface
       double       tolerance            = 1e-10;     ///< relative residual ‖b − Kx‖/‖b‖ of a GMRES solve
       double       step_change          = 0;         ///< |τ/τ_f − 1| above which the factors are replaced; 0: never
       std::string  direct_solver        = "default"; ///< Amesos package, or the scene's own choice
+      double       low_rank_tolerance   = 0;         ///< MUMPS' block-low-rank threshold ε_BLR; 0: full rank
+      std::string  factor_precision     = "single";  ///< "single": MUMPS' factors in single precision
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
