@@ -4,6 +4,8 @@
 #include <fluid_surface/io/parameter_file.h>
 #include <fluid_surface/model/mesh_redistribution.h>
 
+#include <vector>
+
 namespace FluidSurface
 {
   using namespace dealii;
@@ -256,18 +258,23 @@ namespace FluidSurface
     const double       mu       = weight * shear_stiffness;
     const double       K        = weight * area_stiffness * area_scale;
     const double       sJ       = area_scale * J;
+    // The trial function's parts, once per j: ∇Y A and R : ∇Y (which is also div η for the test function).
+    thread_local std::vector<Tensor<2, 3>> stretched;
+    thread_local std::vector<double>       divergence;
+    stretched.resize(point.new_position_gradient.size());
+    divergence.resize(point.new_position_gradient.size());
+    for (const unsigned int j : dofs.new_position)
+      {
+        stretched[j]  = point.new_position_gradient[j] * A;
+        divergence[j] = scalar_product(rotation, point.new_position_gradient[j]);
+      }
     for (const unsigned int i : dofs.new_position)
       {
         const Tensor<2, 3> &grad_eta = point.new_position_gradient[i];
-        const double        div_eta  = scalar_product(rotation, grad_eta);
+        const double        div_eta  = divergence[i];
         rhs(i) += (mu + K * (sJ + 1.0)) * div_eta * dA;
         for (const unsigned int j : dofs.new_position)
-          {
-            const Tensor<2, 3> &grad_Y = point.new_position_gradient[j];
-            matrix(i, j) += (mu * scalar_product(grad_Y * A, grad_eta) +
-                             K * sJ * scalar_product(rotation, grad_Y) * div_eta) *
-                            dA;
-          }
+          matrix(i, j) += (mu * scalar_product(stretched[j], grad_eta) + K * sJ * divergence[j] * div_eta) * dA;
       }
   }
 

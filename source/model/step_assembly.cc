@@ -44,8 +44,7 @@ namespace FluidSurface
       , old_position(gauss.size())
       , nodal_old_position(nodal_rule.size())
       , reference_gradient(gauss.size())
-      , turned_velocity(flow_fe.n_dofs_per_cell())
-      , convected_velocity(flow_fe.n_dofs_per_cell())
+      , trial_velocity(flow_fe.n_dofs_per_cell())
     {}
     CellContext(const CellContext &other)
       : CellContext(other.flow.get_mapping(),
@@ -66,8 +65,8 @@ namespace FluidSurface
     std::vector<Tensor<1, 3>> nodal_smooth_normal;    ///< ñ at the nodal points
     std::vector<Tensor<1, 3>> old_position;           ///< X̂ at the Gauss points
     std::vector<Tensor<1, 3>> nodal_old_position;     ///< X̂ at the nodal points
-    // By local DoF j of u at the current Gauss point: Ω × φ_j and G(φ_j) w (the same for every test function).
-    std::vector<Tensor<1, 3>> turned_velocity, convected_velocity;
+    // By local DoF j of u at the current Gauss point: c φ_j + Ω × φ_j + G(φ_j) w (the same for every test function).
+    std::vector<Tensor<1, 3>> trial_velocity;
     // Law reference: ∇_{S^m}X₀ at the Gauss points, ñ by node, the rows of Y before their projection.
     std::vector<Tensor<2, 3>> reference_gradient;
     std::vector<Tensor<1, 3>> node_normals;
@@ -114,12 +113,17 @@ namespace FluidSurface
                                        old_point - tau * data.frame->carried.value(frame_point) :
                                        old_point;
         const bool turning = data.frame->solved_in_frame() && flow.inertia;
+        // The mass, frame and convection terms are each φ_i · (a vector of the trial function φ_j): their sum
+        // is one product with c φ_j + Ω × φ_j + G(φ_j) w, formed once per j. (∇_w u, v) with w = u^m,
+        // consistent (not skew-symmetrized; doc/scheme.md).
         for (const unsigned int j : layout.velocity)
           {
+            Tensor<1, 3> trial = mass * p.velocity[j];
             if (turning)
-              cell.turned_velocity[j] = SurfaceFluid::turned_velocity(p, j, data.frame->carried.rotation);
+              trial += SurfaceFluid::turned_velocity(p, j, data.frame->carried.rotation);
             if (flow.convection)
-              cell.convected_velocity[j] = SurfaceFluid::convected_velocity(p, j);
+              trial += SurfaceFluid::convected_velocity(p, j);
+            cell.trial_velocity[j] = trial;
           }
         for (const unsigned int i : layout.velocity)
           {
@@ -128,16 +132,7 @@ namespace FluidSurface
             if (flow.convection)
               local.rhs(i) += SurfaceFluid::mesh_motion_term_rhs(p, i, inv_tau, start) * dA;
             for (const unsigned int j : layout.velocity)
-              {
-                double a = flow.viscous_term(p, i, j);
-                a += SurfaceFluid::mass_term(p, i, j, mass);
-                if (turning)
-                  a += SurfaceFluid::frame_rotation_term(p, i, cell.turned_velocity[j]);
-                // (∇_w u, v) with w = u^m, consistent (not skew-symmetrized; doc/scheme.md).
-                if (flow.convection)
-                  a += SurfaceFluid::convection_term(p, i, cell.convected_velocity[j]);
-                local.matrix(i, j) += a * dA;
-              }
+              local.matrix(i, j) += (flow.viscous_term(p, i, j) + p.velocity[i] * cell.trial_velocity[j]) * dA;
             for (const unsigned int j : layout.pressure)
               local.matrix(i, j) += SurfaceFluid::pressure_term(p, i, j) * dA;
             if (flow.convection)

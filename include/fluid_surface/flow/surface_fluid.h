@@ -109,16 +109,9 @@ namespace FluidSurface
     /**
      * The inertia of a step solved in a frame that turns with the angular velocity Ω (the carried frame of the
      * mesh law `reference`): with u = Qũ and v = Qṽ, (1/τ)(u − Q u^m, v) = (1/τ)(ũ − u^m, ṽ) and the frame adds
-     * (Ω × ũ, ṽ), here for the trial function's Ω × φ_j = @p turned (turned_velocity()). Exact when the velocity
-     * turns with the body.
+     * (Ω × ũ, ṽ), whose trial part for φ_j is Ω × φ_j with @p omega = Ω. Exact when the velocity turns with
+     * the body.
      */
-    static double
-    frame_rotation_term(const FlowPointValues &point, const unsigned int i, const dealii::Tensor<1, 3> &turned)
-    {
-      return turned * point.velocity[i];
-    }
-
-    /// Ω × φ_j for the frame's angular velocity @p omega (frame_rotation_term()).
     static dealii::Tensor<1, 3>
     turned_velocity(const FlowPointValues &point, const unsigned int j, const dealii::Tensor<1, 3> &omega)
     {

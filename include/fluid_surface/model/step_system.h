@@ -207,6 +207,8 @@ namespace FluidSurface
     std::unique_ptr<const DofLayout>        dof_layout;
     /// couples() for the local DoFs of a cell: local_coupling[i][j].
     std::vector<std::vector<bool>>          local_coupling;
+    /// Whether distribute_local_to_global() checked a cell against local_coupling since zero().
+    bool                                    coupling_checked = false;
     dealii::DoFHandler<2, 3>               dofs;
     dealii::IndexSet                       owned, relevant;
     dealii::AffineConstraints<double>      hanging_nodes;
