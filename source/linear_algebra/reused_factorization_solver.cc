@@ -56,7 +56,8 @@ namespace FluidSurface
                       Patterns::Tools::to_string(defaults.low_rank_tolerance),
                       RealRange::closed(0, 1e-2),
                       "Dropping threshold ε_BLR, 0 ≤ ε_BLR ≤ 1e-2, of MUMPS' block-low-rank factorization (with "
-                      "Amesos_Mumps): off-diagonal blocks of the fronts are compressed to rank-revealing products "
+                      "Amesos_Mumps and `factor precision = double`; the single-precision factors are full "
+                      "rank): off-diagonal blocks of the fronts are compressed to rank-revealing products "
                       "accurate to ε_BLR, in the factorization and in the substitutions; the factors are then those "
                       "of a matrix within about ε_BLR of the step's and precondition GMRES, which reaches the "
                       "`tolerance` as before. 0: full-rank factors.");
