@@ -11,6 +11,25 @@
 
 namespace FluidSurface
 {
+  namespace
+  {
+    /// Calls @p f(global row, global column, value) for the locally owned entries of @p matrix, row by row.
+    template <typename Function>
+    void
+    for_each_entry(const Epetra_CrsMatrix &matrix, const Function &f)
+    {
+      for (int i = 0; i < matrix.NumMyRows(); ++i)
+        {
+          int     n       = 0;
+          double *entries = nullptr;
+          int    *indices = nullptr;
+          matrix.ExtractMyRowView(i, n, entries, indices);
+          for (int k = 0; k < n; ++k)
+            f(matrix.RowMap().GID(i), matrix.ColMap().GID(indices[k]), entries[k]);
+        }
+    }
+  } // namespace
+
   struct SinglePrecisionLU::Instance
   {
     SMUMPS_STRUC_C data;
@@ -75,18 +94,10 @@ namespace FluidSurface
   {
     rows.clear();
     cols.clear();
-    for (int i = 0; i < matrix.NumMyRows(); ++i)
-      {
-        int     n       = 0;
-        double *entries = nullptr;
-        int    *indices = nullptr;
-        matrix.ExtractMyRowView(i, n, entries, indices);
-        for (int k = 0; k < n; ++k)
-          {
-            rows.push_back(matrix.RowMap().GID(i) + 1);
-            cols.push_back(matrix.ColMap().GID(indices[k]) + 1);
-          }
-      }
+    for_each_entry(matrix, [&](const int row, const int column, const double) {
+      rows.push_back(row + 1);
+      cols.push_back(column + 1);
+    });
     values.resize(rows.size());
     SMUMPS_STRUC_C &data = mumps->data;
     data.n               = matrix.NumGlobalRows();
@@ -101,15 +112,11 @@ namespace FluidSurface
   SinglePrecisionLU::factorize(const Epetra_CrsMatrix &matrix)
   {
     std::size_t position = 0;
-    for (int i = 0; i < matrix.NumMyRows(); ++i)
-      {
-        int     n       = 0;
-        double *entries = nullptr;
-        int    *indices = nullptr;
-        matrix.ExtractMyRowView(i, n, entries, indices);
-        for (int k = 0; k < n; ++k)
-          values[position++] = static_cast<float>(entries[k]);
-      }
+    for_each_entry(matrix, [&](const int, const int, const double value) {
+      if (position < values.size())
+        values[position] = static_cast<float>(value);
+      ++position;
+    });
     AssertThrow(position == values.size(), dealii::ExcMessage("The matrix is not of the analysed pattern."));
     SMUMPS_STRUC_C &data = mumps->data;
     data.a_loc           = values.data();
