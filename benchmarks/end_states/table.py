@@ -36,24 +36,15 @@ def shape_class(l1, l2, l3, delta=1e-2):
     return "triaxial"
 
 
-rows = []
-for prm in sorted(glob.glob(os.path.join(sys.argv[1], "v*_L*_*.prm"))):
-    name = os.path.basename(prm)[:-4]
-    m = re.match(r"v([0-9.]+)_L([0-9.]+)_(prolate|oblate)$", name)
-    if not m:
-        continue
-    v, L0, start = m.groups()
-    run = os.path.join(sys.argv[1], name)
-    row = {"v": v, "L0": L0, "start": start}
+def run_row(run):
+    """The columns of one run directory (statistics and summary) from F on; {"status": "not run"} without them."""
     try:
         c = statistics_columns.read(os.path.join(run, "statistics"))
         summary = open(os.path.join(run, "summary")).read() if os.path.exists(os.path.join(run, "summary")) else ""
     except (OSError, ValueError):
         c, summary = None, ""
     if not c or not c.get("time"):
-        row["status"] = "not run"
-        rows.append(row)
-        continue
+        return {"status": "not run"}
     lam = sorted(c[f"inertia eigenvalue {k}"][-1] for k in (1, 2, 3))
     status = "not steady"
     if "steady state: reached" in summary:
@@ -73,24 +64,35 @@ for prm in sorted(glob.glob(os.path.join(sys.argv[1], "v*_L*_*.prm"))):
     if status == "steady" and not end_dissipation < 1e-6:
         status = "plateau"
     L0m = math.sqrt(sum(c[f"angular momentum {d}"][0] ** 2 for d in "xyz"))
-    row.update({
+    row = {
         "F": f"{c['total energy'][-1]:.8g}", "W": f"{c['bending energy'][-1]:.8g}",
         "omega": f"{c['angular velocity'][-1]:.6g}",
         "lambda1": f"{lam[0]:.6g}", "lambda2": f"{lam[1]:.6g}", "lambda3": f"{lam[2]:.6g}",
         "rigid fraction": f"{c['rigid fraction'][-1]:.6f}", "end time": f"{c['time'][-1]:.6g}",
         "shape": shape_class(*lam), "tilt angle": f"{c['tilt angle'][-1]:.3g}", "status": status, "L0 measured": f"{L0m:.6g}",
-        "end dissipation (rel.)": f"{end_dissipation:.2e}"})
+        "end dissipation (rel.)": f"{end_dissipation:.2e}"}
     _, _, _, rise, _, _, breaking, _, excess = budget(run)
     row.update({"max rise of B (rel.)": f"{rise:.2e}", "steps breaking the law": breaking,
                 "largest excess over the bound": f"{excess:.2e}"})
-    rows.append(row)
+    return row
 
-fields = ["v", "L0", "start", "F", "W", "omega", "lambda1", "lambda2", "lambda3", "rigid fraction", "end time",
-          "shape", "tilt angle", "status", "L0 measured", "end dissipation (rel.)", "max rise of B (rel.)",
-          "steps breaking the law", "largest excess over the bound"]
-with open(sys.argv[2], "w", newline="") as f:
-    w = csv.DictWriter(f, fieldnames=fields)
-    w.writeheader()
-    for r in sorted(rows, key=lambda r: (float(r["v"]), float(r["L0"]), r["start"])):
-        w.writerow(r)
-print(f"{len(rows)} rows, {sum(r.get('status') == 'steady' for r in rows)} steady -> {sys.argv[2]}")
+
+if __name__ == "__main__":
+    rows = []
+    for prm in sorted(glob.glob(os.path.join(sys.argv[1], "v*_L*_*.prm"))):
+        name = os.path.basename(prm)[:-4]
+        m = re.match(r"v([0-9.]+)_L([0-9.]+)_(prolate|oblate)$", name)
+        if not m:
+            continue
+        v, L0, start = m.groups()
+        rows.append({"v": v, "L0": L0, "start": start, **run_row(os.path.join(sys.argv[1], name))})
+
+    fields = ["v", "L0", "start", "F", "W", "omega", "lambda1", "lambda2", "lambda3", "rigid fraction", "end time",
+              "shape", "tilt angle", "status", "L0 measured", "end dissipation (rel.)", "max rise of B (rel.)",
+              "steps breaking the law", "largest excess over the bound"]
+    with open(sys.argv[2], "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        for r in sorted(rows, key=lambda r: (float(r["v"]), float(r["L0"]), r["start"])):
+            w.writerow(r)
+    print(f"{len(rows)} rows, {sum(r.get('status') == 'steady' for r in rows)} steady -> {sys.argv[2]}")
