@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // time stepping/energy law (issue 48): a sphere spinning at ω = 2 at refinement 2 (backward Euler, lab frame) breaks
 // the energy law from its first step by a space error: F + ∫D rises at a rate that halving τ does not reduce. With
-// `energy law = count` the run completes and counts the breaks; with `retry` the first break is retried at τ/2 and
-// then accepted and counted; with `stop` the run ends there with exit status 1, a status line that names the break,
+// `energy law = count` the run completes and counts the breaks; with `retry` the breaks (mostly bending defect) are
+// retried with the mesh law slowed down (5 rejections against 3 before that retry) and at τ/2, then accepted and
+// counted; with `stop` the run ends there with exit status 1, a status line that names the break,
 // and the statistics of the steps before it. Printed: exit status, the summary's status (up to the measured numbers)
 // and its count of breaks, and the number of accepted steps in `statistics`.
 #include <deal.II/base/mpi.h>

@@ -9,6 +9,8 @@ namespace FluidSurface
   {
     if (accepted > 0)
       data.set("model/membrane pull", accepted);
+    if (slowdown > 1)
+      data.set("model/membrane slowdown", slowdown);
   }
 
   void
@@ -16,5 +18,6 @@ namespace FluidSurface
   {
     accepted  = data.has("model/membrane pull") ? data.get_double("model/membrane pull") : 0;
     candidate = accepted;
+    slowdown  = data.has("model/membrane slowdown") ? data.get_double("model/membrane slowdown") : 1;
   }
 } // namespace FluidSurface

@@ -1,4 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/fe_values_extractors.h>
+
 #include <fluid_surface/flow/energy_functionals.h>
 #include <fluid_surface/io/checkpoint.h>
 #include <fluid_surface/model/step_assembly.h>
@@ -156,7 +160,7 @@ namespace FluidSurface
   SurfaceStep::accept_history(const StepCandidate &candidate)
   {
     corrected_steps.accept();
-    membrane_pull.accept();
+    membrane_pull.accept(candidate.tau);
     time_scheme->accept(state.solution, system, candidate.tau);
     error_estimate.accept(system, candidate.tau);
     bordered_solver.turn_kept_factors(candidate.mesh_rotation);
@@ -299,6 +303,14 @@ namespace FluidSurface
     for (unsigned int k = constraints.first_rigid(); k < outcome.multipliers.size(); ++k)
       rigid += outcome.multipliers[k] * outcome.multipliers[k];
     result.rigid_force = std::sqrt(rigid);
+    if (record_energy_budget)
+      {
+        // The multipliers enter the rows of u as +Σ μ_k c_k: their force on the fluid is −Σ μ_k c_k.
+        double power = 0;
+        for (unsigned int k = 0; k < outcome.multipliers.size(); ++k)
+          power -= outcome.multipliers[k] * ((*constraints.columns[k]) * solution.block(0));
+        result.energy_budget.multiplier_power = power;
+      }
     return true;
   }
 
@@ -347,6 +359,9 @@ namespace FluidSurface
   SurfaceStep::finish(StepUnderWay &step, VectorType &x, Result &result, StepCandidate &candidate)
   {
     const StepRequest &request = step.request;
+    const bool         budget  = record_energy_budget && request.velocity == StepRequest::Velocity::flow;
+    if (budget)
+      result.energy_budget.bending_power = bending_power(x);
     if (error_estimate.enabled() && request.velocity == StepRequest::Velocity::flow)
       result.error_estimate = error_estimate.estimate(system,
                                                       x,
@@ -366,6 +381,15 @@ namespace FluidSurface
         candidate.solution = x;
       }
     system.copy_new_position_to_geometry(candidate.solution);
+    const auto kinetic = [&](const VectorType &flow_vector) {
+      return parts.flow.inertia ? kinetic_energy(flow_vector) : 0.0;
+    };
+    if (budget)
+      {
+        result.energy_budget.bending_solved    = parts.bending.energy(geometry.willmore_energy());
+        result.energy_budget.kinetic_solved    = kinetic(candidate.solution);
+        result.energy_budget.kinetic_projected = result.energy_budget.kinetic_solved;
+      }
     const ConservationProjection &conservation = parts.conservation;
     if (conservation.enabled && request.prescribed_velocity() == nullptr)
       {
@@ -374,6 +398,8 @@ namespace FluidSurface
         const SurfaceGeometry::Curvature modes = step.frame.co_rotating() ? geometry.curvature() : step.evaluated_curvature;
         result.node_correction                 = conservation.project_area_and_volume(
           geometry, modes, state.target_area, state.target_volume, parts.volume_constraint.enabled);
+        if (budget)
+          result.energy_budget.kinetic_projected = kinetic(candidate.solution);
         VectorType projected = system.owned_vector();
         projected            = candidate.solution;
         system.copy_position_into(geometry.position(), projected);
@@ -386,7 +412,7 @@ namespace FluidSurface
       TimerSection section(step_timer, "curvature and energy");
       candidate.position       = geometry.position();
       candidate.curvature      = geometry.curvature();
-      candidate.kinetic_energy = parts.flow.inertia ? kinetic_energy(candidate.solution) : 0.0;
+      candidate.kinetic_energy = kinetic(candidate.solution);
     }
     candidate.tau           = step.tau;
     candidate.mesh_rotation = step.frame.mesh_rotation(step.tau);
@@ -406,6 +432,11 @@ namespace FluidSurface
     start.emplace(scheme.start(flow_step ? state.position : geometry.position(), state.solution, system, frame, tau));
     const SurfaceGeometry::Measures old_measures = geometry.measure();
     const SurfaceGeometry::Curvature old_curvature = geometry.curvature(); // of S^m (the geometry may be iterated)
+    if (record_energy_budget && flow_step)
+      {
+        result.energy_budget.bending_start = parts.bending.energy(old_curvature.willmore_energy);
+        result.energy_budget.kinetic_start = parts.flow.inertia ? kinetic_energy(state.solution) : 0.0;
+      }
     // The valve's relaxation solves (velocity at rest) always pull with full weight.
     const double membrane_weight =
       flow_step ? membrane_pull.flow_step_weight(redistribution, old_measures.mesh_quality) : 1.0;
@@ -457,6 +488,37 @@ namespace FluidSurface
   {
     return EnergyFunctionals::kinetic_energy(
       geometry.mapping(), system.dof_handler(), flow_vector, geometry.quadrature(), geometry.get_communicator());
+  }
+
+  double
+  SurfaceStep::bending_power(const VectorType &solution) const
+  {
+    VectorType fields = system.ghosted_vector();
+    fields            = solution;
+    // The assembly's Gauss rule on the surface the step was last assembled on (the geometry, still there).
+    const QGauss<2>           gauss(system.fe().degree + 1);
+    FEValues<2, 3>            flow_values(geometry.mapping(), system.fe(), gauss, update_values | update_JxW_values);
+    FEValues<2, 3>            geometry_values(geometry.mapping(), geometry.fe(), gauss, update_values);
+    std::vector<Tensor<1, 3>> velocity(gauss.size()), normal(gauss.size());
+    std::vector<double>       bending_scalar(gauss.size());
+    const VectorType         &smooth_normal = geometry.normal_field();
+    double                    power         = 0;
+    for (const auto &cell : system.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          flow_values.reinit(cell);
+          geometry_values.reinit(typename DoFHandler<2, 3>::active_cell_iterator(&geometry.triangulation(),
+                                                                                 cell->level(),
+                                                                                 cell->index(),
+                                                                                 &geometry.dof_handler()));
+          flow_values[FEValuesExtractors::Vector(DofLayout::velocity_component)].get_function_values(fields, velocity);
+          flow_values[FEValuesExtractors::Scalar(DofLayout::bending_component)].get_function_values(fields,
+                                                                                                   bending_scalar);
+          geometry_values[FEValuesExtractors::Vector(0)].get_function_values(smooth_normal, normal);
+          for (unsigned int q = 0; q < gauss.size(); ++q)
+            power += bending_scalar[q] * (normal[q] * velocity[q]) * flow_values.JxW(q);
+        }
+    return parts.bending.inverse_bending_number() * Utilities::MPI::sum(power, geometry.get_communicator());
   }
 
   double

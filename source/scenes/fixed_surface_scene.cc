@@ -288,7 +288,8 @@ namespace FluidSurface
              "time stepping/error tolerance",
              "time stepping/scheme",
              "time stepping/frame",
-             "time stepping/backward Euler steps after rejection"}};
+             "time stepping/backward Euler steps after rejection",
+             "time stepping/energy budget"}};
   }
 
   void

@@ -6,7 +6,9 @@
 #include <fluid_surface/io/stop_signals.h>
 #include <fluid_surface/scenes/full_model_scene.h>
 
+#include <cmath>
 #include <csignal>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -61,6 +63,8 @@ namespace FluidSurface
     energy_control = EnergyStepController(time.energy_tolerance(), time.energy_law_tolerance(), time.energy_law_action());
     model.parse_parameters(prm, time.maximum_step_size());
     model.step().set_error_estimation(time.error_control());
+    // `energy law = retry` reads the bending defect of a step that breaks the law (StepController::attempt()).
+    model.step().set_energy_budget(time.energy_budget() || time.energy_law_action() == "retry");
     model.set_time_scheme(time);
     diagnostics.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
@@ -82,7 +86,10 @@ namespace FluidSurface
       {
         checkpoint.clear(); // those of an earlier run in the same directory
         if (Utilities::MPI::this_mpi_process(communicator) == 0)
-          std::filesystem::remove(output.directory() + "error.log");
+          {
+            std::filesystem::remove(output.directory() + "error.log");
+            std::filesystem::remove(output.directory() + "energy_budget");
+          }
       }
     model.step().set_timer(computing_timer);
     // The timing is written however the run ends (a failed run's timing shows where it spent its time),
@@ -358,6 +365,8 @@ namespace FluidSurface
     model.safety_valve().add_to_statistics(statistics, jumps);
     statistics.add_value("wall time", elapsed_wall_time());
     statistics.end_row();
+    if (time.energy_budget())
+      write_energy_budget(tau, step, model.step().components().flow.inertia ? v.kinetic_energy : 0.0, bending_energy);
 
     if (time.step_number() % output.screen_interval() == 0 || !time.before_end())
       {
@@ -386,6 +395,43 @@ namespace FluidSurface
         pcout << std::flush;
       }
     return v;
+  }
+
+  void
+  FullModelScene::write_energy_budget(const double               tau,
+                                      const SurfaceStep::Result &step,
+                                      const double               kinetic,
+                                      const double               bending) const
+  {
+    const SurfaceStep::Result::EnergyBudget &b = step.energy_budget;
+    if (Utilities::MPI::this_mpi_process(communicator) != 0 || !std::isfinite(b.bending_power))
+      return;
+    const std::string name     = output.directory() + "energy_budget";
+    const bool        new_file = !std::filesystem::exists(name);
+    std::ofstream     file(name, std::ios::app);
+    if (new_file)
+      {
+        // A resumed run appends from its checkpoint on: a step may appear twice, the later row is the run's.
+        const char *columns[] = {"time step",
+                                 "time",
+                                 "tau",
+                                 "dissipation rate",
+                                 "bending energy at the start",
+                                 "kinetic energy at the start",
+                                 "bending force power",
+                                 "multiplier power",
+                                 "bending energy of the solve",
+                                 "kinetic energy of the solve",
+                                 "kinetic energy after the area and volume projection",
+                                 "bending energy",
+                                 "kinetic energy"};
+        for (unsigned int c = 0; c < std::size(columns); ++c)
+          file << "# " << c + 1 << ": " << columns[c] << '\n';
+      }
+    file << std::setprecision(12) << time.step_number() << ' ' << time.time() << ' ' << tau << ' '
+         << step.dissipation_rate << ' ' << b.bending_start << ' ' << b.kinetic_start << ' ' << b.bending_power << ' ' << b.multiplier_power << ' '
+         << b.bending_solved << ' ' << b.kinetic_solved << ' ' << b.kinetic_projected << ' ' << bending << ' '
+         << kinetic << '\n';
   }
 
   void

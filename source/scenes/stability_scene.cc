@@ -143,7 +143,8 @@ namespace FluidSurface
              "time stepping/shrink factor",
              "time stepping/easy steps before growth",
              "time stepping/energy tolerance",
-             "time stepping/backward Euler steps after rejection"}};
+             "time stepping/backward Euler steps after rejection",
+             "time stepping/energy budget"}};
   }
 
   void

@@ -66,7 +66,29 @@ namespace FluidSurface
       }
     if (decision.verdict == EnergyStepController::Verdict::reject)
       {
-        if (decision.law_only)
+        // The bending defect: the discrete W changed by more than the bending force's work. Where it is most of
+        // the rise of F + ∫D, the tangential node motion of the mesh law put the energy in, at a rate that no τ
+        // removes (doc/scheme.md, "The discrete energy law"): with `energy law = retry` the step is retried with
+        // the mesh law slowed down, before any other remedy.
+        const SurfaceStep::Result::EnergyBudget &budget = step.result.energy_budget;
+        const double bending_defect = budget.bending_solved - budget.bending_start + step.tau * budget.bending_power;
+        bool slowed = false;
+        if (energy_control->wants_mesh_slowdown(bending_defect, step.tau, decision.law_rise))
+          {
+            slowed = model.step().slow_down_mesh_law();
+            if (!slowed)
+              energy_control->forget_mesh_slowdown();
+          }
+        if (slowed)
+          {
+            model.restore_last_state();
+            time.repeat_step();
+            energy_control->forget_rejection();
+            pcout << "    step rejected (" << decision.reason << ", bending defect " << std::setprecision(3)
+                  << bending_defect << "); retried at the same τ with the mesh law slowed down "
+                  << model.step().mesh_law_slowdown() << "-fold" << std::endl;
+          }
+        else if (decision.law_only)
           retry(step.tau, StepFailure::energy_rise, decision.reason, "");
         else if (model.step().start_corrected_steps())
           {

@@ -97,7 +97,8 @@ namespace FluidSurface
         if (judge_law)
           space_law_rate = std::max(space_law_rate, previous_rate);
       }
-    previous_rate = 0;
+    previous_rate       = 0;
+    slowed_bending_rate = 0;
     max_law_rise_rate = std::max(max_law_rise_rate, law_rise / (tau * std::abs(old_energy)));
     // A kept step forgets the space error only once its rate has clearly fallen: near the rounding floor of the
     // bound a persistent space error flips between kept and breaking steps, and each forgetting would cost a retry.
@@ -112,6 +113,20 @@ namespace FluidSurface
         max_rise_rate = std::max(max_rise_rate, rise / (tau * std::abs(old_energy)));
       }
     return decision;
+  }
+
+  bool
+  EnergyStepController::wants_mesh_slowdown(const double bending_defect, const double tau, const double law_rise)
+  {
+    if (law_action != LawAction::retry || !std::isfinite(bending_defect))
+      return false;
+    const double rate = bending_defect / tau;
+    if (slowed_bending_rate > 0 && rate > 0.5 * slowed_bending_rate)
+      futile_bending_rate = std::max(futile_bending_rate, rate);
+    if (!(bending_defect > 0.5 * law_rise) || rate <= 2 * futile_bending_rate)
+      return false;
+    slowed_bending_rate = rate;
+    return true;
   }
 
   void
@@ -136,6 +151,8 @@ namespace FluidSurface
     data.set("simulation/max law rise rate", max_law_rise_rate);
     data.set("simulation/last dissipation", last_dissipation);
     data.set("simulation/space law rate", space_law_rate);
+    data.set("simulation/slowed bending rate", slowed_bending_rate);
+    data.set("simulation/futile bending rate", futile_bending_rate);
   }
 
   void
@@ -151,5 +168,9 @@ namespace FluidSurface
     max_law_rise_rate    = data.has("simulation/max law rise rate") ? data.get_double("simulation/max law rise rate") : 0;
     last_dissipation     = data.has("simulation/last dissipation") ? data.get_double("simulation/last dissipation") : 0;
     space_law_rate       = data.has("simulation/space law rate") ? data.get_double("simulation/space law rate") : 0;
+    slowed_bending_rate =
+      data.has("simulation/slowed bending rate") ? data.get_double("simulation/slowed bending rate") : 0;
+    futile_bending_rate =
+      data.has("simulation/futile bending rate") ? data.get_double("simulation/futile bending rate") : 0;
   }
 } // namespace FluidSurface

@@ -128,13 +128,25 @@ namespace FluidSurface
                       "count",
                       Patterns::Selection("count|retry|stop"),
                       "What a step that breaks the energy law (`energy law tolerance`) does. count: it is accepted and "
-                      "counted (`steps breaking the energy law` in the summary). retry: it is rejected and retried with "
+                      "counted (`steps breaking the energy law` in the summary). retry: it is rejected and retried; a step "
+                      "whose rise of F + ∫D is more than half bending defect (the discrete W changed by more than the "
+                      "bending force's work: the tangential node motion of the mesh law) first at the same τ with the "
+                      "mesh law slowed tenfold (up to 1000-fold, decaying as e^{−t/0.5}), any other with "
                       "the same scheme at a smaller τ (the factor of rejected steps; a step whose F also rose too fast "
                       "is retried as such, with the iterated geometry, as backward Euler or with a smaller τ); a break "
                       "whose rate (F(t+τ) − F(t) + τD)/τ did not fall when τ was halved is a space-discretization effect: "
                       "the step is accepted and counted, and so are later breaks no faster than twice it. stop: such a "
                       "break ends the run instead (refine the mesh). retry costs a solve per break (doc/scheme.md, "
                       "\"The discrete energy law\").");
+    prm.declare_entry("energy budget",
+                      "false",
+                      Patterns::Bool(),
+                      "Scene full: write the energy budget of every accepted step into the file energy_budget of the "
+                      "output directory: W^m, K^m, the powers P = (1/Be)(y ñ, ũ) of the bending force and P_μ of the "
+                      "multipliers on the step's velocity, W and K of the solved surface, K after the area and volume "
+                      "projection and the final W, K, from which ΔB = ΔF + τD splits into the bending defect ΔW + τP, "
+                      "the multipliers' work, the transport's defect and the projections' ΔF (doc/output.md; "
+                      "benchmarks/energy_law/budget.py). Costs a curvature solve and three integrals per step.");
     prm.leave_subsection();
   }
 
@@ -156,6 +168,7 @@ namespace FluidSurface
     relative_energy_tolerance = prm.get_double("energy tolerance");
     relative_energy_law_tolerance = prm.get_double("energy law tolerance");
     law_action                    = prm.get("energy law");
+    write_energy_budget           = prm.get_bool("energy budget");
     error_tolerance           = prm.get_double("error tolerance");
     scheme_name = prm.get("scheme");
     frame_kind  = prm.get("frame") == "Tisserand" ? FlowStepFrame::tisserand : FlowStepFrame::lab;

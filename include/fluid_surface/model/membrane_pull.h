@@ -5,6 +5,7 @@
 #include <fluid_surface/model/mesh_redistribution.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace FluidSurface
 {
@@ -14,22 +15,48 @@ namespace FluidSurface
    * The weight of the membrane energy of mesh law reference: a latch at the largest w(q) of the accepted steps
    * so far (MeshRedistribution::membrane_weight() of the mesh quality q). A weight that followed q up and down
    * kept the mesh moving in a rigidly rotating end state, and F rose. Checkpoint key `model/membrane pull`.
+   *
+   * With `time stepping/energy law = retry`, a step whose break of the energy law is mostly its bending defect
+   * (the tangential node motion changed the discrete W by more than the bending force's work) is retried with the
+   * mesh law slowed down (slow_down(): the weight divided by a factor s, as T_r multiplied by s), and s returns
+   * to 1 over the following time units (doc/scheme.md, "The discrete energy law"). Checkpoint key
+   * `model/membrane slowdown` (while s > 1).
    */
   class MembranePull
   {
   public:
-    /// The weight of a flow step from a surface of mesh quality @p quality (held until accept()).
+    /// The weight of a flow step from a surface of mesh quality @p quality (held until accept()), over the slowdown.
     double
     flow_step_weight(const MeshRedistribution &redistribution, const double quality)
     {
       candidate = std::max(accepted, redistribution.membrane_weight(quality));
-      return candidate;
+      return candidate / slowdown;
     }
-    /// The step was accepted: its weight is the latch's.
+    /// The step of size @p tau was accepted: its weight is the latch's, and the slowdown decays by e^{−τ/T_s}.
     void
-    accept()
+    accept(const double tau)
     {
       accepted = candidate;
+      slowdown = std::max(1.0, slowdown * std::exp(-tau / recovery_time));
+    }
+    /**
+     * The mesh law slowed down by the factor 10 more, up to 1000 (the weight divided by it, as the relaxation time
+     * T_r multiplied by it). Returns false, and changes nothing, when there is nothing (more) to slow down: a zero
+     * weight, or the largest slowdown already.
+     */
+    bool
+    slow_down()
+    {
+      if (candidate == 0 || slowdown >= max_slowdown)
+        return false;
+      slowdown = std::min(max_slowdown, 10 * slowdown);
+      return true;
+    }
+    /// The factor s ≥ 1 by which the mesh law is slowed down now.
+    double
+    current_slowdown() const
+    {
+      return slowdown;
     }
     /// From now on the membrane energy acts with its full weight (`mesh redistribution/anchor time`).
     void
@@ -45,7 +72,11 @@ namespace FluidSurface
     load(const CheckpointData &data);
 
   private:
-    double accepted = 0, candidate = 0;
+    /// T_s: the slowdown decays by e^{−τ/T_s} per accepted step, from 10 back to 1 in about 1.2 time units.
+    static constexpr double recovery_time = 0.5;
+    static constexpr double max_slowdown  = 1000;
+    double                  accepted = 0, candidate = 0;
+    double                  slowdown = 1;
   };
 } // namespace FluidSurface
 

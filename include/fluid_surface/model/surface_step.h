@@ -23,6 +23,7 @@
 #include <fluid_surface/time_stepping/time_stepper.h>
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -65,6 +66,22 @@ namespace FluidSurface
       double       geometry_change     = 0; ///< the last iterate's largest node move over h (0 without iteration)
       /// The local error estimate of the step (LocalErrorEstimate); negative when there is none (first step).
       double       error_estimate      = -1;
+      /**
+       * With the energy budget on (set_energy_budget()): the energies of the step at its stages and the power
+       * of the bending force, from which its ΔB = ΔF + τD splits into the bending defect, the transport's, the
+       * projections' (doc/scheme.md, "The discrete energy law"; NaN when off or in the valve's steps).
+       */
+      struct EnergyBudget
+      {
+        double bending_start    = std::numeric_limits<double>::quiet_NaN(); ///< W^m on S^m
+        double kinetic_start    = std::numeric_limits<double>::quiet_NaN(); ///< K^m on S^m
+        double bending_power    = std::numeric_limits<double>::quiet_NaN(); ///< P = (1/Be)(y ñ, ũ) of the solve
+        /// P_μ = −Σ_k μ_k (c_k, ũ): the power of the multipliers' forces (γ, momenta) on the step's velocity
+        double multiplier_power = 0;
+        double bending_solved   = std::numeric_limits<double>::quiet_NaN(); ///< W of the solved surface Y
+        double kinetic_solved   = std::numeric_limits<double>::quiet_NaN(); ///< K of the solved u on Y
+        double kinetic_projected = std::numeric_limits<double>::quiet_NaN(); ///< K of u after the area and volume projection
+      } energy_budget;
     };
 
     /// A step on @p geometry from the accepted @p state (both kept by reference).
@@ -142,6 +159,12 @@ namespace FluidSurface
     {
       return bordered_solver;
     }
+    /// Whether advance() records the energy budget of flow steps in Result::energy_budget (`output/energy budget`).
+    void
+    set_energy_budget(const bool on)
+    {
+      record_energy_budget = on;
+    }
     /// Whether advance() estimates the error of flow steps (`time stepping/error tolerance` > 0).
     void
     set_error_estimation(const bool on)
@@ -182,6 +205,18 @@ namespace FluidSurface
     /// scheme, the error estimate, the corrected steps, the membrane pull and the kept factors move on.
     void
     accept_history(const StepCandidate &candidate);
+    /// The mesh law slowed down tenfold more for the retry of a step (MembranePull::slow_down()); false if it cannot be.
+    bool
+    slow_down_mesh_law()
+    {
+      return membrane_pull.slow_down();
+    }
+    /// The factor by which the mesh law is slowed down now (1: not at all).
+    double
+    mesh_law_slowdown() const
+    {
+      return membrane_pull.current_slowdown();
+    }
     /// From now on the membrane energy acts with its full weight (`mesh redistribution/anchor time`).
     void
     pull_fully()
@@ -249,6 +284,13 @@ namespace FluidSurface
     /// @p candidate.
     void
     finish(StepUnderWay &step, VectorType &solution, Result &result, StepCandidate &candidate);
+    /**
+     * The power P = (1/Be)(y ñ, ũ) of the bending force on the velocity of @p solution (in the frame of the step),
+     * with the assembly's Gauss rule on the surface the step was last assembled on: the force's work as the step
+     * itself saw it.
+     */
+    double
+    bending_power(const VectorType &solution) const;
     /// D = (2/Re)‖σ(u)‖² of @p flow_vector on the current surface (EnergyFunctionals::dissipation_rate).
     double
     dissipation_rate(const VectorType &flow_vector) const;
@@ -275,6 +317,7 @@ namespace FluidSurface
     LocalErrorEstimate          error_estimate;
     CorrectedSteps              corrected_steps;
     MembranePull                membrane_pull;
+    bool                        record_energy_budget = false;
     dealii::TimerOutput *step_timer = nullptr;
   };
 } // namespace FluidSurface

@@ -80,6 +80,12 @@ namespace FluidSurface
                 const SurfaceStep::Result             &step,
                 const SurfaceReparametrization::Jumps &jumps = {{0, 0, 0, 0}});
     /**
+     * With `time stepping/energy budget`: one row of the file energy_budget for the accepted @p step of size
+     * @p tau whose final kinetic and bending energies are @p kinetic and @p bending (rank 0 writes).
+     */
+    void
+    write_energy_budget(const double tau, const SurfaceStep::Result &step, const double kinetic, const double bending) const;
+    /**
      * The safety valve after an accepted step: re-parametrizes the surface when its mesh quality is due
      * (SurfaceReparametrization::due()), records it with the valve and returns the jumps, measured as the
      * statistics measure them.

@@ -89,6 +89,21 @@ namespace FluidSurface
       previous_rate = 0;
     }
 
+    /**
+     * With `energy law = retry`: whether the step just rejected, whose F + ∫D rose by @p law_rise in the step of
+     * size @p tau with the bending defect @p bending_defect (ΔW beyond the bending force's work), is to be retried
+     * with the mesh law slowed down: the defect is more than half the rise, and its rate is more than twice the
+     * largest rate that a slowdown did not halve before (then the mesh law does not feed it).
+     */
+    bool
+    wants_mesh_slowdown(const double bending_defect, const double tau, const double law_rise);
+    /// The slowdown that wants_mesh_slowdown() asked for was not possible (the largest one reached).
+    void
+    forget_mesh_slowdown()
+    {
+      slowed_bending_rate = 0;
+    }
+
     /// Appends the three summary lines (rises accepted, steps with rising energy, largest relative rise rate).
     void
     write_summary(std::ostream &out) const;
@@ -130,6 +145,9 @@ namespace FluidSurface
     /// The rate (F(t+τ) − F(t) + τD)/τ of the last break of the energy law accepted as a space error (0 once a step
     /// keeps the law).
     double space_law_rate = 0;
+    /// The bending defect's rate of the last step retried with the mesh law slowed down (0 after an accepted step),
+    /// and the largest such rate that the slowdown did not halve.
+    double slowed_bending_rate = 0, futile_bending_rate = 0;
   };
 } // namespace FluidSurface
 

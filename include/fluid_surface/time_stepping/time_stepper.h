@@ -113,6 +113,13 @@ namespace FluidSurface
       return law_action;
     }
 
+    /// Whether scene full writes the split of each step's energy change into `energy_budget` (`energy budget`).
+    bool
+    energy_budget() const
+    {
+      return write_energy_budget;
+    }
+
     /**
      * Advances time by the τ just used. With error control (error_control()) and an @p error estimate e ≥ 0 of
      * the step, the next τ is τ·min(2, 0.9 (ε_t/e)^½); otherwise τ grows by the growth factor after enough easy
@@ -242,6 +249,7 @@ namespace FluidSurface
     double       relative_energy_tolerance;
     double       relative_energy_law_tolerance = 1e-6;
     std::string  law_action = "count"; ///< `energy law`
+    bool         write_energy_budget = false; ///< `energy budget`
     double       error_tolerance = 0; ///< ε_t; 0: no error control
     unsigned int fallback_steps  = 0; ///< K of `backward Euler steps after rejection`
     std::string   scheme_name = "backward Euler";   ///< `scheme`
