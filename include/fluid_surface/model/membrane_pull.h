@@ -45,7 +45,7 @@ namespace FluidSurface
      * T_r multiplied by it). Returns false, and changes nothing, when there is nothing (more) to slow down (a zero
      * weight, or the largest slowdown already) or when the step's surface has a mesh quality below 0.15: there the
      * mesh needs its pull (the map's (0.65, 20) prolate start, slowed down at quality 0.15 and 0.13, fell to 0.10,
-     * where the safety valve's relaxation solve stalled).
+     * below the safety valve's threshold, and then made no step for minutes).
      */
     bool
     slow_down()
