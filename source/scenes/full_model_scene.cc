@@ -185,8 +185,8 @@ namespace FluidSurface
           report << "reached at t = " << std::setprecision(8) << time.time() << ": " << steady_state.description();
         else
           report << "plateau at t = " << std::setprecision(8) << time.time()
-                 << ", not an end state: F is flat only because the discretization supplies what the flow "
-                    "dissipates (doc/scheme.md, \"The discrete energy law\"; a finer mesh shrinks it): "
+                 << ", not an end state: F is flat only because the discretization supplies more than half of "
+                    "what the flow dissipates (doc/scheme.md, \"The discrete energy law\"; a finer mesh shrinks it): "
                  << steady_state.description();
         steady_state_report = report.str();
         pcout << "-- steady state " << steady_state_report << std::endl;

@@ -24,9 +24,11 @@ namespace FluidSurface
                       "|λ_i(t) − λ_i(t − T_w)| < δ T_w λ₃(t), and the kinetic energy exceeds |L|²/(2λ₃) by less "
                       "than ε_K |F| (a rigid rotation about the axis of largest inertia, the only terminal state "
                       "with angular momentum L), and the flow dissipates less than δ|F| per unit time (∫D < δ T_w "
-                      "|F| over the window). A state that passes every test but the last is a plateau: F is flat "
-                      "only because the discretization supplies what the flow dissipates, and the run stops there "
-                      "with `steady state: plateau` in its summary. 0: run to the end time.");
+                      "|F| over the window). A state that passes every test but the last, and whose F falls by "
+                      "less than half of ∫D over the window, is a plateau: F is flat only because the "
+                      "discretization supplies more than half of what the flow dissipates, and the run stops "
+                      "there with `steady state: plateau` in its summary (if F falls by more, the state is still "
+                      "relaxing and the run goes on). 0: run to the end time.");
     prm.declare_entry("window",
                       "1",
                       RealRange::left_open(0, 1e6),
@@ -84,11 +86,18 @@ namespace FluidSurface
       return std::min(s.inertia[1] - s.inertia[0], s.inertia[2] - s.inertia[1]) / s.inertia[2];
     };
     last_gap_growth = gap(old) > 1e-12 && gap(sample) > 0 ? std::log(gap(sample) / gap(old)) / duration : 0.0;
-    last_dissipation = (sample.dissipated - old.dissipated) / (duration * std::abs(sample.total_energy));
+    last_dissipation  = (sample.dissipated - old.dissipated) / (duration * std::abs(sample.total_energy));
+    last_law_fraction = sample.dissipated > old.dissipated ?
+                          (old.total_energy - sample.total_energy) / (sample.dissipated - old.dissipated) :
+                          0.0;
     if (!(last_energy_rate < rate_tolerance && last_inertia_rate < rate_tolerance &&
           last_kinetic_excess < kinetic_excess_tolerance && last_gap_growth < gap_growth_tolerance))
       return Verdict::running;
-    return last_dissipation < rate_tolerance ? Verdict::reached : Verdict::plateau;
+    if (last_dissipation < rate_tolerance)
+      return Verdict::reached;
+    // F falling by more than half of ∫D: a slow relaxation that keeps the law to within half of D, not a plateau
+    // (the map's (0.65, 10) prolate start at refinement 4 fell at 0.90 ∫D with |ΔF| just under δ T_w |F|).
+    return last_law_fraction > 0.5 ? Verdict::running : Verdict::plateau;
   }
 
   std::string
@@ -99,7 +108,8 @@ namespace FluidSurface
          << ", max |Δλ_i|/(T_w λ₃) = " << last_inertia_rate << " < δ = " << rate_tolerance
          << " over T_w = " << window << ", (K − |L|²/(2λ₃))/|F| = " << last_kinetic_excess
          << " < ε_K = " << kinetic_excess_tolerance << ", growth of the closest eigenvalues' gap " << last_gap_growth
-         << " < σ_s = " << gap_growth_tolerance << ", ∫D/(T_w |F|) = " << last_dissipation;
+         << " < σ_s = " << gap_growth_tolerance << ", ∫D/(T_w |F|) = " << last_dissipation
+         << ", −ΔF/∫D = " << last_law_fraction;
     return text.str();
   }
 
