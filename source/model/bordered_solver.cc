@@ -8,7 +8,8 @@ namespace FluidSurface
 {
   BorderedSolver::BorderedSolver()
     : kept("Amesos_Mumps") // `direct solver = default` of scene full
-    , fresh("Amesos_Klu")
+    , fresh("Amesos_Mumps")
+    , fresh_fallback("Amesos_Klu")
   {}
 
   void
@@ -17,8 +18,10 @@ namespace FluidSurface
     kept.parse_parameters(prm);
     ReusedFactorizationSolver::Parameters fresh_parameters = kept.get_parameters();
     fresh_parameters.reuse_factorization                   = false;
-    fresh_parameters.direct_solver                         = "Amesos_Klu";
+    fresh_parameters.direct_solver                         = "Amesos_Mumps";
     fresh.set_parameters(fresh_parameters);
+    fresh_parameters.direct_solver = "Amesos_Klu";
+    fresh_fallback.set_parameters(fresh_parameters);
   }
 
   BorderedSystem::BlockVector
@@ -40,11 +43,31 @@ namespace FluidSurface
                         BorderedSystem::BlockVector &solution,
                         const bool                   same_step)
   {
-    Outcome                     outcome;
     BorderedSystem::BlockVector rhs = system.make_vector(step_system.rhs());
     rhs.block(0)                    = step_system.rhs();
     BorderedSystem::set_multipliers(rhs, values);
-    ReusedFactorizationSolver &linear_solver = solver == StepRequest::Solver::fresh_klu ? fresh : kept;
+    const bool fresh_solve = solver == StepRequest::Solver::fresh_factorization;
+    if (fresh_solve && !fresh_refused)
+      {
+        const Outcome first = solve_with(fresh, system, step_system, tau, rhs, solution, same_step);
+        if (first.failure == StepFailure::none)
+          return first;
+        fresh.release();
+        fresh_refused = true;
+      }
+    return solve_with(fresh_solve ? fresh_fallback : kept, system, step_system, tau, rhs, solution, same_step);
+  }
+
+  BorderedSolver::Outcome
+  BorderedSolver::solve_with(ReusedFactorizationSolver   &linear_solver,
+                             const BorderedSystem        &system,
+                             const StepSystem            &step_system,
+                             const double                 tau,
+                             const BorderedSystem::BlockVector &rhs,
+                             BorderedSystem::BlockVector &solution,
+                             const bool                   same_step)
+  {
+    Outcome outcome;
     try
       {
         linear_solver.matrix_changed(tau); // every step assembles its matrix on the new surface

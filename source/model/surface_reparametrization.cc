@@ -278,7 +278,7 @@ namespace FluidSurface
     // The target is always the membrane energy relative to S₀: with law bgn the conformal distribution of
     // the current surface is the one that degraded (a bgn prolate went from quality 0.098 to 0.088).
     relaxation_request.law    = MeshRedistribution::Law::reference;
-    relaxation_request.solver = StepRequest::Solver::fresh_klu;
+    relaxation_request.solver = StepRequest::Solver::fresh_factorization;
     const double relaxation_time = step.components().redistribution.relaxation_time;
     const double tau             = relaxation_time > 0 ? 10 * relaxation_time : 1.0;
     VectorType   surface = start_surface, fields = start_fields;
@@ -308,7 +308,7 @@ namespace FluidSurface
     SurfaceGeometry              &geometry     = step.moved_geometry();
     const ConservationProjection &conservation = step.components().conservation;
     StepRequest                   projection_request = run_request;
-    projection_request.solver                        = StepRequest::Solver::fresh_klu;
+    projection_request.solver                        = StepRequest::Solver::fresh_factorization;
     StepCandidate             projected;
     const SurfaceStep::Result projection = step.advance(projection_request, projection_time_step, projected);
     if (!projection.solved)
@@ -336,7 +336,7 @@ namespace FluidSurface
     Result           result;
     SurfaceGeometry &geometry = step.moved_geometry();
     const MPI_Comm   comm     = geometry.get_communicator();
-    // The solves of the valve use a fresh KLU factorization, freed at the end.
+    // The solves of the valve use a fresh factorization, freed at the end.
     struct Finish
     {
       SurfaceStep &step;

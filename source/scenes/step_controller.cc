@@ -140,8 +140,8 @@ namespace FluidSurface
   StepController::accept(const double tau, const double error_estimate, const EnergyStepController::Decision &decision)
   {
     if (decision.verdict == EnergyStepController::Verdict::accept_with_warning)
-      pcout << "    warning: energy rose by " << std::setprecision(3) << decision.rise << " (F + ∫D by "
-            << decision.law_rise << ") at t = " << time.time()
+      pcout << "    warning: F + ∫D rose by " << std::setprecision(3) << decision.law_rise << " (ΔF = " << decision.rise
+            << ") at t = " << time.time()
             << " at a rate that does not fall with τ (space discretization); step accepted" << std::endl;
     if (decision.step_size)
       time.set_step_size(*decision.step_size);

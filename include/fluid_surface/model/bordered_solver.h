@@ -21,8 +21,8 @@ namespace FluidSurface
   /**
    * The solve of the step system bordered by its global constraints c_k·x = g_k with multipliers μ_k
    * (BorderedSystem: the volume row and the rigid-motion rows), by GMRES preconditioned by an LU factorization
-   * kept across steps (ReusedFactorizationSolver, `subsection linear solver`), or by a fresh KLU factorization
-   * for the safety valve's solves; then the constraints are made to hold to round-off.
+   * kept across steps (ReusedFactorizationSolver, `subsection linear solver`), or by a fresh factorization
+   * for the safety valve's solves (MUMPS, KLU where MUMPS refuses the matrix); then the constraints are made to hold to round-off.
    */
   class BorderedSolver
   {
@@ -92,11 +92,14 @@ namespace FluidSurface
     {
       kept.release();
     }
-    /// Frees the factorization of the StepRequest::Solver::fresh_klu solves.
+    /// Frees the factorizations of the StepRequest::Solver::fresh_factorization solves; the next valve tries
+    /// MUMPS again.
     void
     release_fresh_factorization()
     {
       fresh.release();
+      fresh_fallback.release();
+      fresh_refused = false;
     }
     /// Number of LU factorizations of the kept solver so far (kept in checkpoints).
     unsigned int
@@ -118,11 +121,26 @@ namespace FluidSurface
     }
 
   private:
+    /// solve() with @p linear_solver and the assembled right-hand side @p rhs.
+    Outcome
+    solve_with(ReusedFactorizationSolver         &linear_solver,
+               const BorderedSystem              &system,
+               const StepSystem                  &step_system,
+               const double                       tau,
+               const BorderedSystem::BlockVector &rhs,
+               BorderedSystem::BlockVector       &solution,
+               const bool                         same_step);
+
     /// The step's LU factorization, kept across steps (`subsection linear solver`; MUMPS by default).
     ReusedFactorizationSolver kept;
-    /// The fresh KLU solves: MUMPS refused (error −22) the mesh-law matrix of a sheared refinement-3 mesh that
-    /// KLU factorized (tests/mesh_reparametrization).
+    /// The fresh solves (MUMPS): KLU stalled for more than 10 minutes on the relaxation matrix of the map's
+    /// (0.65, 40) prolate start at mesh quality 0.10, which MUMPS factorizes in seconds.
     ReusedFactorizationSolver fresh;
+    /// KLU, for the fresh solves MUMPS refused: the mesh-law matrix of a sheared refinement-3 mesh (error −22,
+    /// tests/mesh_reparametrization).
+    ReusedFactorizationSolver fresh_fallback;
+    /// Whether MUMPS refused a fresh solve since the last release_fresh_factorization().
+    bool fresh_refused = false;
     /// Z = A₀⁻¹C of the step's first solve with the kept factors.
     BorderedFactorizationPreconditioner::KeptColumns kept_columns;
     /// The rotation of the vector unknowns since the kept factorization (turn_kept_factors()).

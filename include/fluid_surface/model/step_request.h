@@ -28,7 +28,7 @@ namespace FluidSurface
     enum class Solver
     {
       kept_factorization, ///< the step's solver (`subsection linear solver`), its factorization kept across steps
-      fresh_klu           ///< KLU without reuse (the valve's solves: MUMPS refused some mesh-law matrices)
+      fresh_factorization ///< a factorization without reuse, MUMPS or, where MUMPS refuses, KLU (the valve's solves)
     };
 
     /// A step of the flow with the model's mesh law @p law and its solver.
