@@ -358,6 +358,34 @@ namespace FluidSurface
     return result;
   }
 
+  void
+  FluidDeformableSurface::perturb_shape(const AzimuthalHarmonic &mode, const double amplitude)
+  {
+    const Point<3> centre(geometry.measure().centre_of_mass);
+    geometry.transform_nodes([&](const Point<3> &x) {
+      const Tensor<1, 3> radial = x - centre;
+      return Point<3>(x + amplitude * mode.normalized_real_part(radial) * radial / radial.norm());
+    });
+    const StepComponents &components = surface_step.components();
+    if (components.conservation.enabled)
+      for (unsigned int pass = 0; pass < 2; ++pass)
+        {
+          const SurfaceGeometry::Curvature modes = geometry.curvature(); // held while the nodes move
+          components.conservation.project_area_and_volume(
+            geometry, modes, state.target_area, state.target_volume, components.volume_constraint.enabled);
+        }
+    VectorType owned(surface_step.dof_handler().locally_owned_dofs(), geometry.get_communicator());
+    owned = state.solution;
+    surface_step.copy_position_into(geometry.position(), owned);
+    if (components.conservation.enabled && components.flow.conserve_momenta)
+      components.conservation.project_momenta(geometry, surface_step.dof_handler(), state.rigid_targets, owned);
+    state.solution = owned;
+    state.position = geometry.position();
+    surface_step.forget_history();
+    surface_step.solver().forget_last_solution();
+    surface_step.solver().request_factorization();
+  }
+
   double
   FluidDeformableSurface::total_energy(const double kinetic_energy, const double willmore_energy) const
   {

@@ -431,6 +431,7 @@ namespace FluidSurface
         {
           v.eigenvalues[d]     = eigenvalues(d);
           v.elongation_axis[d] = eigenvectors(d, 0);
+          v.largest_inertia_axis[d] = eigenvectors(d, 2);
         }
       // A sign convention makes the axis reproducible: its largest component is positive.
       unsigned int largest = 0;

@@ -69,6 +69,7 @@ namespace FluidSurface
     diagnostics.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
     steady_state.parse_parameters(prm);
+    end_state_stability.parse_parameters(prm);
   }
 
   bool
@@ -174,6 +175,11 @@ namespace FluidSurface
       kinetic_energy_excess(values),
       step->tau,
       step->result.dissipation_rate);
+    if (verdict == SteadyState::Verdict::reached && end_state_stability.enabled() && leave_saddle(values))
+      {
+        checkpoint_or_stop(stop_signals.received());
+        return true;
+      }
     const bool ends = verdict != SteadyState::Verdict::running;
     if (output.due(time.time()) || !time.before_end() || ends)
       write_output();
@@ -193,6 +199,38 @@ namespace FluidSurface
         return false;
       }
     checkpoint_or_stop(stop_signals.received());
+    return true;
+  }
+
+  bool
+  FullModelScene::leave_saddle(const Diagnostics::Values &values)
+  {
+    EndStateStability::Measures state;
+    state.area           = values.area;
+    state.reduced_volume = values.reduced_volume;
+    const double inverse_be = model.step().components().bending.inverse_bending_number();
+    state.bending_number = inverse_be > 0 ? 1 / inverse_be : 1;
+    for (unsigned int i = 0; i < 3; ++i)
+      state.inertia[i] = values.eigenvalues[i];
+    state.least_inertia_axis   = values.elongation_axis;
+    state.largest_inertia_axis = values.largest_inertia_axis;
+    state.angular_momentum     = values.angular_momentum;
+    state.rotation_vector      = values.rotation_vector;
+    state.total_energy         = total_energy;
+    const EndStateStability::Assessment assessment = end_state_stability.assess(state);
+    end_state_class = assessment.description;
+    if (!assessment.saddle())
+      return false;
+    pcout << "-- t = " << time.time() << ": not an end state, " << assessment.description
+          << "; the surface is displaced along m = " << assessment.m << (assessment.odd ? " odd" : " even")
+          << " by " << end_state_stability.perturbation() << " and the run goes on" << std::endl;
+    end_state_stability.record_saddle(time.time(), assessment);
+    model.perturb_shape(AzimuthalHarmonic(assessment.axis, assessment.m, assessment.odd),
+                        end_state_stability.perturbation());
+    willmore        = geometry.willmore_energy();
+    total_energy    = model.total_energy(model.kinetic_energy(), willmore);
+    end_state_class = "";
+    steady_state.restart();
     return true;
   }
 
@@ -253,6 +291,7 @@ namespace FluidSurface
     total_energy = data.get_double("simulation/total energy");
     energy_control.load(data);
     steady_state.load(data);
+    end_state_stability.load(data);
     wall_time_before_restart = data.get_double("simulation/wall time");
     flow_was_non_rigid       = data.has("simulation/flow was non-rigid");
     willmore                 = geometry.willmore_energy();
@@ -465,6 +504,7 @@ namespace FluidSurface
     data.set("simulation/total energy", total_energy);
     energy_control.save(data);
     steady_state.save(data);
+    end_state_stability.save(data);
     data.set("simulation/wall time", elapsed_wall_time());
     if (flow_was_non_rigid)
       data.set("simulation/flow was non-rigid", 1u);
@@ -520,6 +560,12 @@ namespace FluidSurface
     energy_control.write_summary(text);
     if (steady_state.enabled())
       text << "steady state: " << (steady_state_report.empty() ? "not reached" : steady_state_report) << '\n';
+    if (steady_state.enabled() && end_state_stability.enabled())
+      {
+        text << "saddles left: " << end_state_stability.saddles_left() << '\n';
+        if (!end_state_class.empty())
+          text << "end state class: " << end_state_class << '\n';
+      }
     model.safety_valve().write_summary(text);
     text << "LU factorizations: " << model.step().solver().n_factorizations() << '\n';
     {

@@ -12,6 +12,7 @@
 #include <fluid_surface/scenes/geometry_scene.h>
 #include <fluid_surface/scenes/simulation.h>
 #include <fluid_surface/scenes/stability_scene.h>
+#include <fluid_surface/time_stepping/end_state_stability.h>
 #include <fluid_surface/time_stepping/steady_state.h>
 #include <fluid_surface/time_stepping/time_stepper.h>
 
@@ -54,6 +55,7 @@ namespace FluidSurface
     Checkpoint::declare_parameters(prm);
     SecondVariation::declare_parameters(prm);
     SteadyState::declare_parameters(prm);
+    EndStateStability::declare_parameters(prm);
     StabilityScene::declare_parameters(prm);
   }
 

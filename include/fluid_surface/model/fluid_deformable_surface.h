@@ -147,6 +147,15 @@ namespace FluidSurface
     /// The safety valve on the accepted state (SurfaceReparametrization::reparametrize()).
     SurfaceReparametrization::Result
     reparametrize();
+
+    /**
+     * Displaces the nodes of the accepted state by ε h(x − c) along x − c (c the centre of mass, h @p mode's
+     * normalized real part, ε = @p amplitude), as `initial state/perturbation form = azimuthal` does at the start;
+     * then A, V and (with `conserve momenta`) the momenta are projected back onto their targets and the step
+     * forgets its history. Leaving a saddle of the energy (EndStateStability).
+     */
+    void
+    perturb_shape(const AzimuthalHarmonic &mode, const double amplitude);
     /// The safety valve: its parameters and its record of the run.
     SurfaceReparametrization &
     safety_valve()

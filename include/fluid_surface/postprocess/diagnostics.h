@@ -66,6 +66,8 @@ namespace FluidSurface
       double               area = 0, volume = 0, reduced_volume = 0, mesh_quality = 0;
       double               kinetic_energy = 0, angular_velocity = 0, max_normal_velocity = 0;
       dealii::Tensor<1, 3> linear_momentum, angular_momentum, rotation_vector, elongation_axis;
+      /// The eigenvector of λ₃ (the axis of an oblate body of revolution).
+      dealii::Tensor<1, 3> largest_inertia_axis;
       double               eigenvalues[3]     = {0, 0, 0};
       double               symmetry_deviation = 0, tilt_angle = 0, rigid_fraction = 0;
       /// E(L²) to the reference equilibrium: the section through the axis, the one normal to it (through

@@ -11,6 +11,7 @@
 #include <fluid_surface/scenes/scene.h>
 #include <fluid_surface/scenes/step_controller.h>
 #include <fluid_surface/time_stepping/energy_step_controller.h>
+#include <fluid_surface/time_stepping/end_state_stability.h>
 #include <fluid_surface/time_stepping/steady_state.h>
 #include <fluid_surface/time_stepping/time_stepper.h>
 
@@ -71,6 +72,13 @@ namespace FluidSurface
      */
     bool
     attempt_step(StepController &controller, const StopSignals &stop_signals);
+
+    /**
+     * At a state the steady-state check calls an end state: its class (EndStateStability); at a saddle the
+     * surface is displaced along its falling class and the check starts again. Returns whether it was a saddle.
+     */
+    bool
+    leave_saddle(const Diagnostics::Values &values);
     /**
      * One statistics row and screen report of the accepted state (with the @p jumps of the re-parametrization
      * of this step, zero if none); returns its measures.
@@ -148,8 +156,11 @@ namespace FluidSurface
     Diagnostics            diagnostics;
     Checkpoint             checkpoint;
     SteadyState            steady_state;
+    EndStateStability      end_state_stability;
     /// How the end state was reached (empty until then).
     std::string steady_state_report;
+    /// The energetic class of the end state (empty until then, or when it was not assessed).
+    std::string end_state_class;
 
     bool         resuming = false;
     double       total_energy = 0;             ///< F = kinetic + bending energy of the accepted state

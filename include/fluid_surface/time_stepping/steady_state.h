@@ -83,6 +83,13 @@ namespace FluidSurface
     Verdict
     assess(Sample sample, const double kinetic_excess, const double tau, const double dissipation_rate);
 
+    /// Forgets the samples: the window starts again at the next assess() (after the state was displaced).
+    void
+    restart()
+    {
+      samples.clear();
+    }
+
     /// The measures of the last assess() as one line, for the screen and the summary.
     std::string
     description() const;
