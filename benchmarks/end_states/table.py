@@ -6,7 +6,9 @@ Columns: v, L0 (nominal), start, F, W, omega, lambda1 ≤ lambda2 ≤ lambda3 (i
 end time, shape, tilt angle (degrees between the rotation vector and the axis of least inertia: 90 for a body
 rotating about a transverse axis), status (steady | plateau: F flat while the flow dissipates, held by the
 discretization | not steady | stopped: …), L0 measured (|L| at t = 0), end dissipation (rel.) (∫D over the last
-unit of time over |F|: a run that stopped "steady" with it ≥ 1e-6, the steady-state test's δ, is a plateau).
+unit of time over |F|: a run that stopped "steady" with it ≥ 1e-6, the steady-state test's δ, is a plateau),
+saddles left and end state class (the summary's lines of `steady state/saddle check`: minimum | saddle | 3D (scene
+stability) | not classified; empty for a build before it or a run that did not end steady).
 shape, from the inertia eigenvalues with δ = 1e-2 relative to λ₃:
   sphere      λ₃ − λ₁ < δλ₃
   prolate     λ₃ − λ₂ < δλ₃: elongated, nearly a body of revolution about the axis of least inertia
@@ -71,6 +73,14 @@ def run_row(run):
         "rigid fraction": f"{c['rigid fraction'][-1]:.6f}", "end time": f"{c['time'][-1]:.6g}",
         "shape": shape_class(*lam), "tilt angle": f"{c['tilt angle'][-1]:.3g}", "status": status, "L0 measured": f"{L0m:.6g}",
         "end dissipation (rel.)": f"{end_dissipation:.2e}"}
+    # The program's own class of the end state (`steady state/saddle check`, builds from 2026-12-07 on).
+    saddles = re.search(r"^saddles left: (\d+|none)", summary, re.M)
+    row["saddles left"] = "" if not saddles else ("0" if saddles.group(1) == "none" else saddles.group(1))
+    cls = re.search(r"^end state class: (.*)$", summary, re.M)
+    row["end state class"] = "" if not cls else (
+        "minimum" if ": a minimum" in cls.group(1) else
+        "saddle" if ": a saddle" in cls.group(1) else
+        "3D (scene stability)" if "scene stability" in cls.group(1) else "not classified")
     _, _, _, rise, _, _, breaking, _, excess = budget(run)
     row.update({"max rise of B (rel.)": f"{rise:.2e}", "steps breaking the law": breaking,
                 "largest excess over the bound": f"{excess:.2e}"})
@@ -89,7 +99,7 @@ if __name__ == "__main__":
 
     fields = ["v", "L0", "start", "F", "W", "omega", "lambda1", "lambda2", "lambda3", "rigid fraction", "end time",
               "shape", "tilt angle", "status", "L0 measured", "end dissipation (rel.)", "max rise of B (rel.)",
-              "steps breaking the law", "largest excess over the bound"]
+              "steps breaking the law", "largest excess over the bound", "saddles left", "end state class"]
     with open(sys.argv[2], "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields)
         w.writeheader()
