@@ -175,7 +175,7 @@ namespace FluidSurface
       kinetic_energy_excess(values),
       step->tau,
       step->result.dissipation_rate);
-    if (verdict == SteadyState::Verdict::reached && end_state_stability.enabled() && leave_saddle(values))
+    if (verdict != SteadyState::Verdict::running && end_state_stability.enabled() && leave_saddle(values))
       {
         checkpoint_or_stop(stop_signals.received());
         return true;

@@ -74,7 +74,7 @@ namespace FluidSurface
     attempt_step(StepController &controller, const StopSignals &stop_signals);
 
     /**
-     * At a state the steady-state check calls an end state: its class (EndStateStability); at a saddle the
+     * At a state the steady-state check calls an end state or a plateau: its class (EndStateStability); at a saddle the
      * surface is displaced along its falling class and the check starts again. Returns whether it was a saddle.
      */
     bool
