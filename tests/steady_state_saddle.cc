@@ -11,6 +11,9 @@
 // D = 5e-7|F| (below δ: an end state); and F falling at a fraction of D: at 0.9 of D = 1.1e-6|F| (|ΔF| under δ T_w|F|,
 // the law kept to 10 % of D: still relaxing, the run goes on, as the map's (0.65, 10) prolate start at refinement 4,
 // which this check stopped as a plateau before) and at 0.4 of D = 2e-6|F| (more than half of D supplied: a plateau).
+// Last, a mode growing at 1e-3 < σ_s from g = 2e-4: an end state after one window, unless a saddle was left before
+// (restart_after_saddle(): the gap may then grow no faster than δ; the resting discocyte of v = 0.75 at refinement 4),
+// and a steady gap after a saddle was left (an end state).
 #include <deal.II/base/parameter_handler.h>
 
 #include <fluid_surface/time_stepping/steady_state.h>
@@ -27,8 +30,9 @@ namespace
       const double rate,
       const double g0,
       const char  *tolerance   = "0.01",
-      const double dissipation = 0,
-      const double falling     = 0)
+      const double dissipation  = 0,
+      const double falling      = 0,
+      const bool   after_saddle = false)
   {
     dealii::ParameterHandler prm;
     SteadyState::declare_parameters(prm);
@@ -39,6 +43,8 @@ namespace
     prm.leave_subsection();
     SteadyState steady;
     steady.parse_parameters(prm);
+    if (after_saddle)
+      steady.restart_after_saddle();
     const double lambda3 = 10;
     for (int k = 0; k <= 200; ++k)
       {
@@ -69,4 +75,7 @@ main()
   run("steady gap, dissipating 5e-7 F with F flat", 0, 2e-7, "0.01", 5e-7 * 47.6);
   run("steady gap, dissipating 1.1e-6 F with F falling at 0.9 of it", 0, 2e-7, "0.01", 1.1e-6 * 47.6, 0.9);
   run("steady gap, dissipating 2e-6 F with F falling at 0.4 of it", 0, 2e-7, "0.01", 2e-6 * 47.6, 0.4);
+  run("slow mode, σ = 1e-3 < σ_s", 1e-3, 2e-4);
+  run("slow mode, σ = 1e-3, after a saddle was left", 1e-3, 2e-4, "0.01", 0, 0, true);
+  run("steady gap, after a saddle was left", 0, 2e-4, "0.01", 0, 0, true);
 }

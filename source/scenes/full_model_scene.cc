@@ -230,7 +230,7 @@ namespace FluidSurface
     willmore        = geometry.willmore_energy();
     total_energy    = model.total_energy(model.kinetic_energy(), willmore);
     end_state_class = "";
-    steady_state.restart();
+    steady_state.restart_after_saddle();
     return true;
   }
 

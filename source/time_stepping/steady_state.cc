@@ -91,13 +91,19 @@ namespace FluidSurface
                           (old.total_energy - sample.total_energy) / (sample.dissipated - old.dissipated) :
                           0.0;
     if (!(last_energy_rate < rate_tolerance && last_inertia_rate < rate_tolerance &&
-          last_kinetic_excess < kinetic_excess_tolerance && last_gap_growth < gap_growth_tolerance))
+          last_kinetic_excess < kinetic_excess_tolerance && last_gap_growth < gap_growth_limit()))
       return Verdict::running;
     if (last_dissipation < rate_tolerance)
       return Verdict::reached;
     // F falling by more than half of ∫D: a slow relaxation that keeps the law to within half of D, not a plateau
     // (the map's (0.65, 10) prolate start at refinement 4 fell at 0.90 ∫D with |ΔF| just under δ T_w |F|).
     return last_law_fraction > 0.5 ? Verdict::running : Verdict::plateau;
+  }
+
+  double
+  SteadyState::gap_growth_limit() const
+  {
+    return left_saddle ? std::min(gap_growth_tolerance, rate_tolerance) : gap_growth_tolerance;
   }
 
   std::string
@@ -108,7 +114,8 @@ namespace FluidSurface
          << ", max |Δλ_i|/(T_w λ₃) = " << last_inertia_rate << " < δ = " << rate_tolerance
          << " over T_w = " << window << ", (K − |L|²/(2λ₃))/|F| = " << last_kinetic_excess
          << " < ε_K = " << kinetic_excess_tolerance << ", growth of the closest eigenvalues' gap " << last_gap_growth
-         << " < σ_s = " << gap_growth_tolerance << ", ∫D/(T_w |F|) = " << last_dissipation
+         << (left_saddle ? " < δ (a saddle was left) = " : " < σ_s = ") << gap_growth_limit()
+         << ", ∫D/(T_w |F|) = " << last_dissipation
          << ", −ΔF/∫D = " << last_law_fraction;
     return text.str();
   }
@@ -117,6 +124,8 @@ namespace FluidSurface
   SteadyState::save(CheckpointData &data) const
   {
     data.set("steady state/samples", static_cast<unsigned int>(samples.size()));
+    if (left_saddle)
+      data.set("steady state/left a saddle", true);
     data.set("steady state/dissipated", dissipated);
     for (unsigned int k = 0; k < samples.size(); ++k)
       {
@@ -133,7 +142,8 @@ namespace FluidSurface
   SteadyState::load(const CheckpointData &data)
   {
     samples.clear();
-    dissipated = 0;
+    dissipated  = 0;
+    left_saddle = data.has("steady state/left a saddle");
     // Checkpoints written before this check (or before its dissipation) have no samples (or no ∫D): the window
     // starts again.
     if (!data.has("steady state/samples") || !data.has("steady state/dissipated"))

@@ -83,11 +83,17 @@ namespace FluidSurface
     Verdict
     assess(Sample sample, const double kinetic_excess, const double tau, const double dissipation_rate);
 
-    /// Forgets the samples: the window starts again at the next assess() (after the state was displaced).
+    /**
+     * Forgets the samples: the window starts again at the next assess(). After the state was displaced along the
+     * falling mode of a saddle (EndStateStability), the gap of the inertia eigenvalues must from then on grow no
+     * faster than δ instead of σ_s: the mode of a shallow saddle grows more slowly than σ_s (the resting discocyte
+     * of v = 0.75 at refinement 4: 1.1e-3 per unit time), and the state it leaves is not an end state.
+     */
     void
-    restart()
+    restart_after_saddle()
     {
       samples.clear();
+      left_saddle = true;
     }
 
     /// The measures of the last assess() as one line, for the screen and the summary.
@@ -100,6 +106,10 @@ namespace FluidSurface
     load(const CheckpointData &data);
 
   private:
+    /// The largest growth rate of the eigenvalues' gap of an end state: σ_s, or δ once a saddle was left.
+    double
+    gap_growth_limit() const;
+
     double rate_tolerance     = 0;
     double window                    = 1;
     double kinetic_excess_tolerance  = 1e-4;
@@ -110,6 +120,8 @@ namespace FluidSurface
     double last_gap_growth           = 0;
     double last_dissipation          = 0;
     double last_law_fraction         = 0; ///< −ΔF/∫D over the window
+    /// Whether the run has left a saddle (restart_after_saddle(); kept in checkpoints).
+    bool left_saddle = false;
     /// ∫₀ᵗ D of the accepted steps so far.
     double dissipated = 0;
     /// At least T_w/20 apart, the oldest at or before t − T_w.
