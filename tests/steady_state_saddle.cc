@@ -12,7 +12,8 @@
 // the law kept to 10 % of D: still relaxing, the run goes on, as the map's (0.65, 10) prolate start at refinement 4,
 // which this check stopped as a plateau before) and at 0.4 of D = 2e-6|F| (more than half of D supplied: a plateau).
 // Last, a mode growing at 1e-3 < σ_s from g = 2e-4: an end state after one window, unless a saddle was left before
-// (restart_after_saddle(): the gap may then grow no faster than δ; the resting discocyte of v = 0.75 at refinement 4),
+// (restart_after_saddle(): the gap may then grow no faster than δ; the transient of the displaced resting discocyte
+// of v = 0.75 at refinement 4),
 // and a steady gap after a saddle was left (an end state).
 #include <deal.II/base/parameter_handler.h>
 

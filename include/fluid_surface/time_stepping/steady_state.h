@@ -86,8 +86,9 @@ namespace FluidSurface
     /**
      * Forgets the samples: the window starts again at the next assess(). After the state was displaced along the
      * falling mode of a saddle (EndStateStability), the gap of the inertia eigenvalues must from then on grow no
-     * faster than δ instead of σ_s: the mode of a shallow saddle grows more slowly than σ_s (the resting discocyte
-     * of v = 0.75 at refinement 4: 1.1e-3 per unit time), and the state it leaves is not an end state.
+     * faster than δ instead of σ_s: the mode of a shallow saddle can grow more slowly than σ_s, and the window right
+     * after the displacement holds its transient (the resting discocyte of v = 0.75 at refinement 4: the gap grew at
+     * 1.1e-3 over that window, and the state was called an end state).
      */
     void
     restart_after_saddle()
