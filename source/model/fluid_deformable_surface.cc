@@ -196,6 +196,19 @@ namespace FluidSurface
       std::array<SmoothRandomField, 3> random;
     };
 
+    /// Moves every node x to x + ε δ(x, x − c)(x − c)/|x − c|, c the centre of mass before the move; returns c.
+    template <typename Form>
+    Point<3>
+    displace_radially(SurfaceGeometry &geometry, const double amplitude, const Form &delta)
+    {
+      const Point<3> centre(geometry.measure().centre_of_mass);
+      geometry.transform_nodes([&](const Point<3> &x) {
+        const Tensor<1, 3> radial = x - centre;
+        return Point<3>(x + amplitude * delta(x, radial) * radial / radial.norm());
+      });
+      return centre;
+    }
+
   } // namespace
 
   void
@@ -204,13 +217,10 @@ namespace FluidSurface
     if (initial_entries.shape_perturbation > 0)
       {
         const SmoothRandomField field(initial_entries.random_seed, 0);
-        const Point<3>          centre(geometry.measure().centre_of_mass);
-        geometry.transform_nodes([&](const Point<3> &x) {
-          const Tensor<1, 3> radial = x - centre;
-          const double       delta =
-            azimuthal_perturbation ? azimuthal_perturbation->normalized_real_part(radial) : field(x);
-          return Point<3>(x + initial_entries.shape_perturbation * delta * radial / radial.norm());
-        });
+        const auto              delta = [&](const Point<3> &x, const Tensor<1, 3> &radial) {
+          return azimuthal_perturbation ? azimuthal_perturbation->normalized_real_part(radial) : field(x);
+        };
+        const Point<3> centre = displace_radially(geometry, initial_entries.shape_perturbation, delta);
         // Spinning about the unperturbed centre would give the surface the momentum ω e × A(c' − c), and L
         // about its centre of mass would then change by (c(t) − c(0)) × P wherever the discrete centre of
         // mass does not move exactly with P/A.
@@ -361,10 +371,8 @@ namespace FluidSurface
   void
   FluidDeformableSurface::perturb_shape(const AzimuthalHarmonic &mode, const double amplitude)
   {
-    const Point<3> centre(geometry.measure().centre_of_mass);
-    geometry.transform_nodes([&](const Point<3> &x) {
-      const Tensor<1, 3> radial = x - centre;
-      return Point<3>(x + amplitude * mode.normalized_real_part(radial) * radial / radial.norm());
+    displace_radially(geometry, amplitude, [&](const Point<3> &, const Tensor<1, 3> &radial) {
+      return mode.normalized_real_part(radial);
     });
     const StepComponents &components = surface_step.components();
     if (components.conservation.enabled)
