@@ -5,7 +5,7 @@ marker by shape class, colour by F − W (the rotational energy |L|²/(2λ₃) o
 run that is not steady, and a ring around the points where the two starts end in different states (F differs by
 more than 1e-3 relative, above the
 refinement-3 spread of one state reached from the two starts, or the shape class differs, and both are steady). With
-a `class` column (classify.py) the ring is solid only where both end states are verified minima (bistability) and
+a class (`class` of classify.py or `end state class` of table.py) the ring is solid only where both end states are verified minima (bistability) and
 dashed otherwise, a saddle gets a red cross, and with the stability chart's CSV the boundary L_c(v) of the spinning
 oblate's minima (stability_chart/chart.csv) is drawn on both panels (interpolated between the L₀ columns).
     /usr/bin/python3 benchmarks/end_states/plot.py results.csv phase_diagram.png [chart.csv]"""
@@ -26,8 +26,13 @@ rotational = [float(r["F"]) - float(r["W"]) for r in rows] or [0.0]
 norm = plt.Normalize(min(rotational), max(rotational))
 
 
+def class_of(r):
+    """classify.py's `class` or table.py's `end state class` (minimum …, saddle …, 3D …), "" without either."""
+    return r.get("class") or r.get("end state class") or ""
+
+
 def minimum(r):
-    return r.get("class") == "minimum"
+    return class_of(r).startswith("minimum")
 
 
 def column_of(L):
@@ -60,11 +65,12 @@ for ax, start in zip(axes, ("prolate", "oblate")):
         x, y = column[float(r["L0"])], float(r["v"])
         ax.scatter([x], [y], marker=markers[r["shape"]], s=150, c=[float(r["F"]) - float(r["W"])], cmap="viridis",
                    norm=norm, edgecolors="black" if r["status"] == "steady" else "red", linewidths=1.5, zorder=3)
-        if r.get("class", "").startswith("saddle"):
+        if class_of(r).startswith("saddle"):
             ax.scatter([x], [y], marker="x", s=90, c="red", linewidths=2, zorder=4)
         pair = by_point[(r["v"], r["L0"])]
         if len(pair) == 2 and differs(pair["prolate"], pair["oblate"]):
-            verified = "class" not in r or (minimum(pair["prolate"]) and minimum(pair["oblate"]))
+            classified = "class" in r or "end state class" in r
+            verified = not classified or (minimum(pair["prolate"]) and minimum(pair["oblate"]))
             ax.scatter([x], [y], marker="o", s=420, facecolors="none", edgecolors="tab:orange", linewidths=1.5,
                        linestyles="solid" if verified else "dashed", zorder=2)
     if boundary:
@@ -84,7 +90,7 @@ handles += [Line2D([], [], marker="s", linestyle="none", color="grey", markeredg
                    label="not steady"),
             Line2D([], [], marker="o", linestyle="none", markerfacecolor="none", markeredgecolor="tab:orange",
                    markersize=14, label="starts end apart")]
-if any("class" in r for r in rows):
+if any(class_of(r) for r in rows):
     handles.append(Line2D([], [], marker="x", linestyle="none", color="red", markersize=9, label="saddle"))
 if boundary:
     handles.append(Line2D([], [], color="tab:red", label="L_c(v) of the spinning oblate"))

@@ -8,7 +8,9 @@ rotating about a transverse axis), status (steady | plateau: F flat while the fl
 discretization | not steady | stopped: …), L0 measured (|L| at t = 0), end dissipation (rel.) (∫D over the last
 unit of time over |F|: a run that stopped "steady" with it ≥ 1e-6, the steady-state test's δ, is a plateau),
 saddles left and end state class (the summary's lines of `steady state/saddle check`: minimum | saddle | 3D (scene
-stability) | not classified; empty for a build before it or a run that did not end steady).
+stability) | not classified; empty for a build before it or a run that did not end steady; a 3D end state that
+spectra.sh analysed: minimum or saddle by its spectrum, see spectrum_class; the other start's row, if it ends in
+the same state, "… (as the prolate start's state)").
 shape, from the inertia eigenvalues with δ = 1e-2 relative to λ₃:
   sphere      λ₃ − λ₁ < δλ₃
   prolate     λ₃ − λ₂ < δλ₃: elongated, nearly a body of revolution about the axis of least inertia
@@ -36,6 +38,25 @@ def shape_class(l1, l2, l3, delta=1e-2):
     if l2 - l1 < delta * l3:
         return "oblate"
     return "triaxial"
+
+
+def spectrum_class(directory, resolution=1e-3, least_normal_share=0.05):
+    """The class of a 3D end state from spectra.sh's spectrum (directory/spectrum.csv), None without one. A row grows
+    if σ > resolution and its normal share is at least least_normal_share (below it the mode only slides the nodes);
+    it counts one direction if its multiplier is real, two for a pair (doc/stability.md, "Which modes grow"). The
+    symmetries (the translations, the turn about L) have |σ| below the resolution."""
+    try:
+        rows = list(csv.DictReader(open(os.path.join(directory, "spectrum.csv"))))
+    except OSError:
+        return None
+    if not rows:
+        return None
+    growing = [r for r in rows if float(r["growth rate"]) > resolution and float(r["normal share"]) >= least_normal_share]
+    leading = max(float(r["growth rate"]) for r in rows)
+    if not growing:
+        return f"minimum (scene stability: leading σ {leading:.1e})"
+    directions = sum(1 if abs(float(r["multiplier argument"])) < 1e-9 else 2 for r in growing)
+    return f"saddle (scene stability: {directions} growing directions; leading σ {leading:.2e})"
 
 
 def run_row(run):
@@ -81,6 +102,8 @@ def run_row(run):
         "minimum" if ": a minimum" in cls.group(1) else
         "saddle" if ": a saddle" in cls.group(1) else
         "3D (scene stability)" if "scene stability" in cls.group(1) else "not classified")
+    if row["end state class"] == "3D (scene stability)":
+        row["end state class"] = spectrum_class(run + "_stability") or row["end state class"]
     _, _, _, rise, _, _, breaking, _, excess = budget(run)
     row.update({"max rise of B (rel.)": f"{rise:.2e}", "steps breaking the law": breaking,
                 "largest excess over the bound": f"{excess:.2e}"})
@@ -97,6 +120,16 @@ if __name__ == "__main__":
         v, L0, start = m.groups()
         rows.append({"v": v, "L0": L0, "start": start, **run_row(os.path.join(sys.argv[1], name))})
 
+    # Both starts of a point that end steady in one state (the same shape, F within 1e-5 relative: the refinement-3
+    # spread of one state reached from the two starts) share its class: spectra.sh analyses one of them.
+    for r in rows:
+        if r.get("status") != "steady" or r.get("end state class") != "3D (scene stability)":
+            continue
+        for o in rows:
+            if (o["v"], o["L0"]) == (r["v"], r["L0"]) and o is not r and o.get("status") == "steady" \
+                    and o["shape"] == r["shape"] and abs(float(o["F"]) - float(r["F"])) <= 1e-5 * abs(float(r["F"])) \
+                    and o["end state class"].split(" (")[0] in ("minimum", "saddle"):
+                r["end state class"] = f"{o['end state class'].split(' (')[0]} (as the {o['start']} start's state)"
     fields = ["v", "L0", "start", "F", "W", "omega", "lambda1", "lambda2", "lambda3", "rigid fraction", "end time",
               "shape", "tilt angle", "status", "L0 measured", "end dissipation (rel.)", "max rise of B (rel.)",
               "steps breaking the law", "largest excess over the bound", "saddles left", "end state class"]
