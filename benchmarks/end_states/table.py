@@ -40,23 +40,40 @@ def shape_class(l1, l2, l3, delta=1e-2):
     return "triaxial"
 
 
-def spectrum_class(directory, resolution=1e-3, least_normal_share=0.05):
-    """The class of a 3D end state from spectra.sh's spectrum (directory/spectrum.csv), None without one. A row grows
-    if σ > resolution and its normal share is at least least_normal_share (below it the mode only slides the nodes);
-    it counts one direction if its multiplier is real, two for a pair (doc/stability.md, "Which modes grow"). The
-    symmetries (the translations, the turn about L) have |σ| below the resolution."""
+def spectrum_class(directory, least_normal_share=0.05, least_symmetry_share=0.5, resolution=1e-3):
+    """The class of a 3D end state from spectra.sh's scene stability (directory/spectrum.csv), None without one
+    (doc/stability.md, "Which modes grow"). Rows that only slide the nodes (normal share below least_normal_share)
+    and the neutral modes of the symmetries (the translations and the turn about the rotation axis: symmetry share
+    at least least_symmetry_share) are set aside. Each other row has σ to within b = ln(1/(1 − r))/T (r its residual,
+    T the map time): it grows if σ − b > 0 and decays if σ + b < 0. One grows: a saddle, with its directions (one
+    for a real multiplier, two for a pair); all decay: a minimum; else undecided. A spectrum without the symmetry
+    share column (a build before it) counts a row as growing if σ > resolution."""
     try:
         rows = list(csv.DictReader(open(os.path.join(directory, "spectrum.csv"))))
     except OSError:
         return None
     if not rows:
         return None
-    growing = [r for r in rows if float(r["growth rate"]) > resolution and float(r["normal share"]) >= least_normal_share]
-    leading = max(float(r["growth rate"]) for r in rows)
-    if not growing:
-        return f"minimum (scene stability: leading σ {leading:.1e})"
-    directions = sum(1 if abs(float(r["multiplier argument"])) < 1e-9 else 2 for r in growing)
-    return f"saddle (scene stability: {directions} growing directions; leading σ {leading:.2e})"
+    prm = open(os.path.join(directory, "used_parameters.prm")).read()
+    T = float(re.search(r"set map time\s*=\s*([0-9.eE+-]+)", prm).group(1))
+    shape = [r for r in rows if float(r["normal share"]) >= least_normal_share]
+    if "symmetry share" in rows[0]:
+        neutral = [r for r in shape if float(r["symmetry share"]) >= least_symmetry_share]
+        shape = [r for r in shape if float(r["symmetry share"]) < least_symmetry_share]
+        bound = {id(r): -math.log(max(1e-300, 1 - min(float(r["residual"]), 0.999999))) / T for r in shape}
+        growing = [r for r in shape if float(r["growth rate"]) - bound[id(r)] > 0]
+        undecided = [r for r in shape if r not in growing and float(r["growth rate"]) + bound[id(r)] >= 0]
+    else:
+        neutral, undecided = [], []
+        growing = [r for r in shape if float(r["growth rate"]) > resolution]
+    symmetries = f"; symmetries |σ| ≤ {max(abs(float(r['growth rate'])) for r in neutral):.1e}" if neutral else ""
+    leading = max((float(r["growth rate"]) for r in shape), default=float("nan"))
+    if growing:
+        directions = sum(1 if abs(float(r["multiplier argument"])) < 1e-9 else 2 for r in growing)
+        return f"saddle (scene stability: {directions} growing directions; leading σ {leading:.2e}{symmetries})"
+    if undecided:
+        return f"undecided (scene stability: leading σ {leading:.1e} within its residual's bound{symmetries})"
+    return f"minimum (scene stability: leading shape σ {leading:.2e}{symmetries})"
 
 
 def run_row(run):

@@ -9,8 +9,11 @@
 #include <fluid_surface/model/rigid_motion.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <complex>
 #include <map>
+#include <vector>
 
 namespace FluidSurface
 {
@@ -267,5 +270,74 @@ namespace FluidSurface
       }
     Utilities::MPI::sum(ArrayView<const double>(sums, 2), communicator, ArrayView<double>(sums, 2));
     return sums[1] > 0 ? sums[0] / sums[1] : 0;
+  }
+
+  double
+  NodalVectorField::symmetry_share(const VectorType   &re,
+                                   const VectorType   &im,
+                                   const VectorType   &normal,
+                                   const Tensor<1, 3> &axis,
+                                   const Point<3>     &centre) const
+  {
+    // sums: the Gram matrix G_kl = Σ s_k s_l (16), b_k = Σ s_k w (real and imaginary, 8), Σ|w|² (1).
+    std::array<double, 25> sums{};
+    for (unsigned int n = 0; n < triples.size(); ++n)
+      {
+        Tensor<1, 3>         nu;
+        std::complex<double> w;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            nu[c] = normal[triples[n][c]];
+            w += std::complex<double>(re[triples[n][c]], im[triples[n][c]]) * nu[c];
+          }
+        const std::array<double, 4> s = {{nu[0], nu[1], nu[2], cross_product_3d(axis, points[n] - centre) * nu}};
+        for (unsigned int k = 0; k < 4; ++k)
+          {
+            for (unsigned int l = 0; l < 4; ++l)
+              sums[4 * k + l] += s[k] * s[l];
+            sums[16 + k] += s[k] * w.real();
+            sums[20 + k] += s[k] * w.imag();
+          }
+        sums[24] += std::norm(w);
+      }
+    Utilities::MPI::sum(ArrayView<const double>(sums.data(), sums.size()),
+                        communicator,
+                        ArrayView<double>(sums.data(), sums.size()));
+    if (!(sums[24] > 0))
+      return 0;
+    // bᵀG⁺b by Gram–Schmidt in the inner product G: a generator with no normal part of its own drops out.
+    const double                       floor = 1e-6 * std::max({sums[0], sums[5], sums[10], sums[15]});
+    std::vector<std::array<double, 4>> basis;
+    double                             projected = 0;
+    for (unsigned int k = 0; k < 4; ++k)
+      {
+        std::array<double, 4> v{};
+        v[k] = 1;
+        for (const auto &q : basis)
+          {
+            double dot = 0;
+            for (unsigned int l = 0; l < 4; ++l)
+              dot += sums[4 * k + l] * q[l];
+            for (unsigned int l = 0; l < 4; ++l)
+              v[l] -= dot * q[l];
+          }
+        double norm2 = 0;
+        for (unsigned int i = 0; i < 4; ++i)
+          for (unsigned int l = 0; l < 4; ++l)
+            norm2 += v[i] * sums[4 * i + l] * v[l];
+        if (!(norm2 > floor))
+          continue;
+        for (double &c : v)
+          c /= std::sqrt(norm2);
+        double re_part = 0, im_part = 0;
+        for (unsigned int l = 0; l < 4; ++l)
+          {
+            re_part += v[l] * sums[16 + l];
+            im_part += v[l] * sums[20 + l];
+          }
+        projected += re_part * re_part + im_part * im_part;
+        basis.push_back(v);
+      }
+    return projected / sums[24];
   }
 } // namespace FluidSurface

@@ -89,6 +89,7 @@ namespace FluidSurface
         mode.odd        = false;
         mode.purity     = 0;
         mode.normal_share = 0;
+        mode.symmetry_share = 0;
         mode.frequency  = std::arg(mu) / map_time;
           {
             Perturbation re = zero(), im = zero();
@@ -115,6 +116,7 @@ namespace FluidSurface
                     }
                 }
             mode.normal_share = positions->normal_share(re.position, im.position, base_normal);
+            mode.symmetry_share = positions->symmetry_share(re.position, im.position, base_normal, axis, centre);
             mode.m            = std::abs(best_k);
             mode.purity = total > 0 ? best / total : 0;
             // z ∝ e^{imφ} with μ = e^{(σ + iΩ)T}: the real mode ∝ cos(mφ + Ωt), arg Q_m turns at −Ω in the frame

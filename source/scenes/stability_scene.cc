@@ -401,7 +401,7 @@ namespace FluidSurface
           << ',' << mode.frequency << ',' << std::abs(mode.multiplier) << ',' << std::arg(mode.multiplier) << ','
           << mode.residual << ',' << mode.purity << ',' << mode.normal_share << ','
           << (from_checkpoint ? std::string("all") : std::to_string(m)) << ','
-          << (from_checkpoint ? "all" : (odd ? "odd" : "even")) << '\n';
+          << (from_checkpoint ? "all" : (odd ? "odd" : "even")) << ',' << mode.symmetry_share << '\n';
   }
 
   void
@@ -520,7 +520,7 @@ namespace FluidSurface
       {
         std::ofstream csv(spectrum_file);
         csv << "m,parity,growth rate,frequency,multiplier modulus,multiplier argument,residual,purity,normal share,seed m,"
-               "seed parity\n";
+               "seed parity,symmetry share\n";
       }
     std::vector<std::string> unconverged;
     for (const unsigned int m : from_checkpoint ? std::vector<unsigned int>{0} : wavenumbers)
@@ -532,7 +532,8 @@ namespace FluidSurface
             pcout << "      μ = " << std::setprecision(6) << mode.multiplier << ": σ = "
                   << std::log(std::abs(mode.multiplier)) / map_time << ", Ω = " << mode.frequency << ", m = " << mode.m
                   << (mode.odd ? " odd" : " even") << " (purity " << std::setprecision(3) << mode.purity
-                  << ", normal share " << mode.normal_share << "), residual " << std::setprecision(2) << std::scientific
+                  << ", normal share " << mode.normal_share << ", symmetry share " << mode.symmetry_share
+                  << "), residual " << std::setprecision(2) << std::scientific
                   << mode.residual << std::defaultfloat
                   << std::endl;
           // The first reported mode that has not converged (the leading one; of an end state, any of the

@@ -109,6 +109,21 @@ namespace FluidSurface
     double
     normal_share(const VectorType &re, const VectorType &im, const VectorType &normal) const;
 
+    /**
+     * The share of the normal displacement w = z·n of the complex field z = @p re + i @p im (@p normal as in
+     * normal_share()) that the rigid motions of a body rotating about @p axis through @p centre at fixed A, V and L
+     * give: |Pw|²/|w|² over the nodes, P the orthogonal projection onto the span of e_k·n (the three translations)
+     * and (@p axis × (x − c))·n (the turn about the axis). ≈ 1 for the neutral modes of a rigidly rotating state;
+     * normal parts only, so that nodes sliding along the surface do not count. A generator whose normal part
+     * vanishes (the turn of a body of revolution about its axis) drops out. Over all ranks.
+     */
+    double
+    symmetry_share(const VectorType           &re,
+                   const VectorType           &im,
+                   const VectorType           &normal,
+                   const dealii::Tensor<1, 3> &axis,
+                   const dealii::Point<3>     &centre) const;
+
   private:
     std::vector<std::array<dealii::types::global_dof_index, 3>> triples; ///< the DoFs of the locally owned nodes
     std::vector<dealii::Point<3>>                               points;  ///< their support points

@@ -103,6 +103,9 @@ namespace FluidSurface
       bool                 odd;        ///< its parity
       double               purity;     ///< the share of that content in the whole
       double               normal_share; ///< the share of δX normal to the surface (NodalVectorField::normal_share())
+      /// the share of δX·n that the translations and the turn about the rotation axis give: ≈ 1 for the neutral
+      /// modes of the symmetries (NodalVectorField::symmetry_share())
+      double symmetry_share;
       double frequency; ///< the co-rotating frequency of arg Q_m (signed, in (−π/T, π/T])
     };
 
