@@ -22,7 +22,9 @@ rows = [r for r in csv.DictReader(open(sys.argv[1])) if r.get("F")]
 markers = {"sphere": "o", "prolate": "s", "oblate": "D", "triaxial": "^"}
 l0s = sorted({float(r["L0"]) for r in csv.DictReader(open(sys.argv[1]))})
 column = {L0: k for k, L0 in enumerate(l0s)}  # L₀ = 0, 5, 10, 20, 40 equally spaced
-rotational = [float(r["F"]) - float(r["W"]) for r in rows] or [0.0]
+# The colour scale of the runs that ended (steady or at a plateau): a run stopped early is far from its end.
+ended = [r for r in rows if r["status"] in ("steady", "plateau")] or rows
+rotational = [float(r["F"]) - float(r["W"]) for r in ended] or [0.0]
 norm = plt.Normalize(min(rotational), max(rotational))
 
 
@@ -87,7 +89,7 @@ axes[0].set_ylim(0.6, 1.0)
 handles = [Line2D([], [], marker=m, linestyle="none", color="grey", markeredgecolor="black", markersize=9, label=s)
            for s, m in markers.items()]
 handles += [Line2D([], [], marker="s", linestyle="none", color="grey", markeredgecolor="red", markersize=9,
-                   label="not steady"),
+                   label="not steady, or a plateau"),
             Line2D([], [], marker="o", linestyle="none", markerfacecolor="none", markeredgecolor="tab:orange",
                    markersize=14, label="starts end apart")]
 if any(class_of(r) for r in rows):

@@ -119,7 +119,7 @@ def run_row(run):
         "minimum" if ": a minimum" in cls.group(1) else
         "saddle" if ": a saddle" in cls.group(1) else
         "3D (scene stability)" if "scene stability" in cls.group(1) else "not classified")
-    if row["end state class"] == "3D (scene stability)":
+    if row["end state class"] == "3D (scene stability)" or (status == "plateau" and row["end state class"] == ""):
         row["end state class"] = spectrum_class(run + "_stability") or row["end state class"]
     _, _, _, rise, _, _, breaking, _, excess = budget(run)
     row.update({"max rise of B (rel.)": f"{rise:.2e}", "steps breaking the law": breaking,
