@@ -12,7 +12,10 @@ namespace FluidSurface
       {
         const unsigned int c = fe.system_to_component_index(i).first;
         if (c < pressure_component)
-          velocity.push_back(i);
+          {
+            velocity.push_back(i);
+            velocity_direction.push_back(c - velocity_component);
+          }
         else if (c == pressure_component)
           pressure.push_back(i);
         else if (c == curvature_component)

@@ -125,14 +125,25 @@ namespace FluidSurface
               trial += SurfaceFluid::convected_velocity(p, j);
             cell.trial_velocity[j] = trial;
           }
-        for (const unsigned int i : layout.velocity)
+        // The viscous term is symmetric: one evaluation serves (i, j) and (j, i). φ_i = φ e_d has one direction d,
+        // so φ_i · t = φ t_d (the same number as the full product).
+        const std::vector<unsigned int> &velocity = layout.velocity, &direction = layout.velocity_direction;
+        for (unsigned int a = 0; a < velocity.size(); ++a)
           {
+            const unsigned int i   = velocity[a];
+            const double       phi = p.velocity[i][direction[a]];
             if (flow.inertia)
               local.rhs(i) += SurfaceFluid::mass_term_rhs(p, i, inv_tau) * dA;
             if (flow.convection)
               local.rhs(i) += SurfaceFluid::mesh_motion_term_rhs(p, i, inv_tau, start) * dA;
-            for (const unsigned int j : layout.velocity)
-              local.matrix(i, j) += (flow.viscous_term(p, i, j) + p.velocity[i] * cell.trial_velocity[j]) * dA;
+            local.matrix(i, i) += (flow.viscous_term(p, i, i) + phi * cell.trial_velocity[i][direction[a]]) * dA;
+            for (unsigned int b = a + 1; b < velocity.size(); ++b)
+              {
+                const unsigned int j       = velocity[b];
+                const double       viscous = flow.viscous_term(p, i, j);
+                local.matrix(i, j) += (viscous + phi * cell.trial_velocity[j][direction[a]]) * dA;
+                local.matrix(j, i) += (viscous + p.velocity[j][direction[b]] * cell.trial_velocity[i][direction[b]]) * dA;
+              }
             for (const unsigned int j : layout.pressure)
               local.matrix(i, j) += SurfaceFluid::pressure_term(p, i, j) * dA;
             if (flow.convection)

@@ -26,6 +26,8 @@ namespace FluidSurface
     explicit DofLayout(const dealii::FiniteElement<2, 3> &fe);
 
     std::vector<unsigned int> velocity;       ///< u ∈ [Q2]³
+    /// The direction d of each DoF of u (parallel to `velocity`): its shape function is φ e_d.
+    std::vector<unsigned int> velocity_direction;
     std::vector<unsigned int> pressure;       ///< p ∈ Q1
     std::vector<unsigned int> curvature;      ///< κ ∈ Q_k
     std::vector<unsigned int> bending_scalar; ///< y ∈ Q_k
