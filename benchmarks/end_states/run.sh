@@ -11,7 +11,7 @@
 # REFINEMENT (default 3), VS, L0S (override the grids), END (default 100: the last time a run may reach), STEPS_PER_RUN,
 # TAU_MAX (default 0.1), MESH_LAW (membrane or conformal, default membrane), ENERGY_LAW (time stepping/energy law:
 # retry, the default, count or stop; doc/scheme.md, "The discrete energy law"; set and empty: the entry is not written,
-# for a build older than the entry).
+# for a build older than the entry), GRAD_DIV (flow/grad-div stabilization γ_gd; unset: the entry is not written).
 # Then: /usr/bin/python3 benchmarks/end_states/table.py WORK benchmarks/end_states/results.csv
 #       /usr/bin/python3 benchmarks/end_states/plot.py benchmarks/end_states/results.csv benchmarks/end_states/phase_diagram.png
 set -u
@@ -39,7 +39,8 @@ queue=$(for v in $vs; do for L0 in $l0s; do for start in prolate oblate; do
     echo "subsection model"; echo "  set scene = full"; echo "end"
     echo "subsection geometry"; echo "  set shape = ellipsoid"; echo "  set semi-axes = $a, $a, $c"
     echo "  set refinement = $refinement"; echo "  set position degree = 2"; echo "end"
-    echo "subsection flow"; echo "  set Re = 1"; echo "  set conserve momenta = true"; echo "end"
+    echo "subsection flow"; echo "  set Re = 1"; echo "  set conserve momenta = true"
+    [ -n "${GRAD_DIV:-}" ] && echo "  set grad-div stabilization = $GRAD_DIV"; echo "end"
     echo "subsection bending"; echo "  set Be = 1"; echo "end"
     echo "subsection initial state"; echo "  set angular velocity = $omega"; echo "  set rotation axis = 0, 0, 1"
     echo "  set shape perturbation = 1e-6"; echo "  set random seed = 1"; echo "end"

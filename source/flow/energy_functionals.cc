@@ -59,9 +59,12 @@ namespace FluidSurface
                      const VectorType       &state,
                      const Quadrature<2>    &quadrature,
                      const double            Re,
-                     const MPI_Comm          communicator)
+                     const MPI_Comm          communicator,
+                     const double            grad_div,
+                     const double            area_rate)
     {
       std::vector<Tensor<2, 3>> gradient(quadrature.size());
+      double                    grad_div_sum = 0;
       const double              sum = integrate(
         mapping, dofs, quadrature, update_gradients | update_normal_vectors, communicator,
         [&](const FEValues<2, 3> &fe_values, double &sum) {
@@ -70,9 +73,13 @@ namespace FluidSurface
             {
               const Tensor<2, 3> sigma = SurfaceOperators::strain_rate(gradient[q], fe_values.normal_vector(q));
               sum += scalar_product(sigma, sigma) * fe_values.JxW(q);
+              if (grad_div > 0)
+                grad_div_sum += Utilities::fixed_power<2>(SurfaceOperators::surface_divergence(gradient[q]) - area_rate) * fe_values.JxW(q);
             }
         });
-      return 2.0 / Re * sum;
+      if (grad_div > 0)
+        grad_div_sum = Utilities::MPI::sum(grad_div_sum, communicator);
+      return 2.0 / Re * sum + grad_div * grad_div_sum;
     }
   } // namespace EnergyFunctionals
 } // namespace FluidSurface

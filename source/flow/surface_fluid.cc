@@ -41,6 +41,15 @@ namespace FluidSurface
                       "equilibrium perturbed by 2e-2, refinement 3: 11 % of L by the time F has fallen by 10 % "
                       "with τ ≤ 0.05, still 8 % with τ ≤ 0.0125: mostly a space-discretization error). |μ| is "
                       "the statistics column 'rigid multiplier'.");
+    prm.declare_entry("grad-div stabilization",
+                      "0",
+                      RealRange::closed(0, 1e6),
+                      "Scene full: γ_gd ≥ 0 of the grad-div term γ_gd(div_P u − s, div_P v) on the momentum rows (s the "
+                      "area rate of the continuity row). Consistent (the exact flow has div_P u = s) and dissipative: "
+                      "it adds γ_gd‖div_P u − s‖² to the dissipation rate D, which the statistics and the energy law "
+                      "then include. It damps the discrete velocity that the Q1 pressure does not see, i.e. the "
+                      "parasitic currents of a body at rest or in rigid rotation (doc/scheme.md, \"Grad-div "
+                      "stabilization\"). 0: off.");
     prm.declare_entry("rigid motion regularization",
                       "1e-6",
                       RealRange::closed(0, 1),
@@ -61,6 +70,7 @@ namespace FluidSurface
     convection                  = prm.get_bool("convection") && inertia;
     conserve_momenta            = prm.get_bool("conserve momenta") && inertia;
     rigid_motion_regularization = prm.get_double("rigid motion regularization");
+    grad_div                    = prm.get_double("grad-div stabilization");
     if (!inertia && !(rigid_motion_regularization >= 1e-12))
       throw_invalid_entry("flow/rigid motion regularization",
                           prm.get("rigid motion regularization"),

@@ -82,8 +82,8 @@ namespace FluidSurface
   {
     /**
      * The surface fluid's rows (SurfaceFluid): (1/τ)(u − û, v) + (G u, v) − (1/τ)(G (Y − X̂), v) + (2/Re)(σ(u),
-     * σ(v)) − (p, div_P v) (in the Stokes limit ε(u, v) instead of the inertia, no convection) and
-     * −(div_P u, q) = −(s, q). With law reference in the frame carried by the rigid motion: (Ω × u, v) and the
+     * σ(v)) + γ_gd(div_P u − s, div_P v) − (p, div_P v) (in the Stokes limit ε(u, v) instead of the inertia, no
+     * convection) and −(div_P u, q) = −(s, q). With law reference in the frame carried by the rigid motion: (Ω × u, v) and the
      * mesh velocity R + (Y − Z)/τ.
      */
     class FlowTerm : public StepTerm
@@ -92,6 +92,7 @@ namespace FluidSurface
       explicit FlowTerm(const StepComponents &components)
         : flow(components.flow)
         , regularization(components.momentum_constraints.regularization())
+        , grad_div(flow.grad_div > 0)
       {}
       void
       gauss_point(const unsigned int q, CellContext &cell) const override
@@ -136,11 +137,13 @@ namespace FluidSurface
               local.rhs(i) += SurfaceFluid::mass_term_rhs(p, i, inv_tau) * dA;
             if (flow.convection)
               local.rhs(i) += SurfaceFluid::mesh_motion_term_rhs(p, i, inv_tau, start) * dA;
-            local.matrix(i, i) += (flow.viscous_term(p, i, i) + phi * cell.trial_velocity[i][direction[a]]) * dA;
+            if (grad_div)
+              local.rhs(i) += flow.grad_div * data.area_rate * p.divergence[i] * dA;
+            local.matrix(i, i) += (viscous_term(p, i, i) + phi * cell.trial_velocity[i][direction[a]]) * dA;
             for (unsigned int b = a + 1; b < velocity.size(); ++b)
               {
                 const unsigned int j       = velocity[b];
-                const double       viscous = flow.viscous_term(p, i, j);
+                const double       viscous = viscous_term(p, i, j);
                 local.matrix(i, j) += (viscous + phi * cell.trial_velocity[j][direction[a]]) * dA;
                 local.matrix(j, i) += (viscous + p.velocity[j][direction[b]] * cell.trial_velocity[i][direction[b]]) * dA;
               }
@@ -159,8 +162,17 @@ namespace FluidSurface
       }
 
     private:
+      /// The viscous term and, with γ_gd > 0, the grad-div term γ_gd div_P φ_i div_P φ_j (both symmetric).
+      double
+      viscous_term(const FlowPointValues &p, const unsigned int i, const unsigned int j) const
+      {
+        const double viscous = flow.viscous_term(p, i, j);
+        return grad_div ? viscous + flow.grad_div * p.divergence[i] * p.divergence[j] : viscous;
+      }
+
       const SurfaceFluid &flow;
       const double        regularization;
+      const bool          grad_div; ///< γ_gd > 0
     };
 
     /// (u, v) = (u_prescribed, v) and (p, q) = 0: the L² projection of a prescribed velocity (in the carried

@@ -204,9 +204,7 @@ namespace FluidSurface
     data.normal                        = &normal;
     data.reference_position            = &state.reference_position;
     data.frame                         = &step.frame;
-    // div_P u = s with s = −(A^m − A₀)/(τ_c A^m) returns any area drift (∫div_P u = dA/dt);
-    // τ_c = max(τ, τ_drift) keeps the correction bounded when a rejected step shrinks τ.
-    data.area_rate       = -(step.old_measures.area - state.target_area) / (drift_time(data.tau) * step.old_measures.area);
+    data.area_rate       = area_rate(step);
     data.area_scale      = state.target_area / geometry.measure().area;
     data.membrane_weight = step.membrane_weight;
     return data;
@@ -373,7 +371,7 @@ namespace FluidSurface
     candidate.solution = x;
     {
       TimerSection section(step_timer, "diagnostics");
-      result.dissipation_rate = dissipation_rate(candidate.solution); // of ũ on S^m, that of u on the carried surface
+      result.dissipation_rate = dissipation_rate(candidate.solution, area_rate(step)); // of ũ on S^m, that of u on the carried surface
     }
     if (step.frame.solved_in_frame())
       {
@@ -522,13 +520,23 @@ namespace FluidSurface
   }
 
   double
-  SurfaceStep::dissipation_rate(const VectorType &flow_vector) const
+  SurfaceStep::dissipation_rate(const VectorType &flow_vector, const double area_rate) const
   {
     return EnergyFunctionals::dissipation_rate(geometry.mapping(),
                                                system.dof_handler(),
                                                flow_vector,
                                                geometry.quadrature(),
                                                parts.flow.Re,
-                                               geometry.get_communicator());
+                                               geometry.get_communicator(),
+                                               parts.flow.grad_div,
+                                               area_rate);
+  }
+
+  double
+  SurfaceStep::area_rate(const StepUnderWay &step) const
+  {
+    // div_P u = s with s = −(A^m − A₀)/(τ_c A^m) returns any area drift (∫div_P u = dA/dt);
+    // τ_c = max(τ, τ_drift) keeps the correction bounded when a rejected step shrinks τ.
+    return -(step.old_measures.area - state.target_area) / (drift_time(step.start->tau) * step.old_measures.area);
   }
 } // namespace FluidSurface

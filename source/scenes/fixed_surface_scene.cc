@@ -278,6 +278,7 @@ namespace FluidSurface
              "time stepping"},
             {"flow/conserve momenta",
              "flow/rigid motion regularization",
+             "flow/grad-div stabilization",
              "time stepping/adaptive",
              "time stepping/minimum time step",
              "time stepping/maximum time step",

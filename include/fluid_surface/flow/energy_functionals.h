@@ -33,14 +33,17 @@ namespace FluidSurface
                    const dealii::Quadrature<2>       &quadrature,
                    const MPI_Comm                     communicator);
 
-    /// D = (2/Re)‖σ(u)‖² = (2/Re)∫σ(u):σ(u), σ(u) = sym(P ∇_C u) with the cell normal, summed over all ranks.
+    /// D = (2/Re)‖σ(u)‖² = (2/Re)∫σ(u):σ(u), σ(u) = sym(P ∇_C u) with the cell normal, plus the grad-div
+    /// term's γ_gd‖div_P u − s‖² (@p grad_div = γ_gd, @p area_rate = s), summed over all ranks.
     double
     dissipation_rate(const dealii::Mapping<2, 3>    &mapping,
                      const dealii::DoFHandler<2, 3> &dofs,
                      const VectorType               &state,
                      const dealii::Quadrature<2>    &quadrature,
                      const double                    Re,
-                     const MPI_Comm                  communicator);
+                     const MPI_Comm                  communicator,
+                     const double                    grad_div  = 0,
+                     const double                    area_rate = 0);
   } // namespace EnergyFunctionals
 } // namespace FluidSurface
 

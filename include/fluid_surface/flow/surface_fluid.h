@@ -145,6 +145,7 @@ namespace FluidSurface
     bool   convection{};                  ///< the convection ∇_w u is assembled (only with inertia)
     bool   conserve_momenta{};            ///< scene full: multipliers keep ∫u and ∫x × u (only with inertia)
     double rigid_motion_regularization{}; ///< scene full, Stokes limit: ε of ε(u, v)
+    double grad_div{};                    ///< scene full: γ_gd of the grad-div term γ_gd(div_P u − s, div_P v)
   };
 } // namespace FluidSurface
 

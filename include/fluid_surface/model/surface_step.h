@@ -291,9 +291,13 @@ namespace FluidSurface
      */
     double
     bending_power(const VectorType &solution) const;
-    /// D = (2/Re)‖σ(u)‖² of @p flow_vector on the current surface (EnergyFunctionals::dissipation_rate).
+    /// D = (2/Re)‖σ(u)‖² + γ_gd‖div_P u − s‖² of @p flow_vector on the current surface, s = @p area_rate
+    /// (EnergyFunctionals::dissipation_rate).
     double
-    dissipation_rate(const VectorType &flow_vector) const;
+    dissipation_rate(const VectorType &flow_vector, const double area_rate) const;
+    /// The area rate s = −(A^m − A₀)/(τ_c A^m) of the continuity row div_P u = s of @p step.
+    double
+    area_rate(const StepUnderWay &step) const;
     /// The geometry's position back to X^m.
     void
     restore_old_geometry();
