@@ -8,8 +8,9 @@
 #                                                    # ENERGY_LAW, default retry: end_states/run.sh)
 #   benchmarks/energy_law/grid.sh before [--quick]   # the step of issue 48's report: BEFORE_EXE = a build of f0c166e,
 #                                                    # with the map's mesh law of then (MESH_LAW=conformal), counting
-# Environment: REFINEMENT (3), TAU_MAX (0.1), END (40), JOBS (1), VS, L0S, WORK (default benchmarks/energy_law/work/
-# STEP_rREFINEMENT_tauTAU_MAX_tEND, not committed). The runs resume from their checkpoints when the script is run again.
+# Environment: REFINEMENT (3), TAU_MAX (0.1), END (40), JOBS (1), VS, L0S, GRAD_DIV (flow/grad-div stabilization of
+# the step after; the name gets _graddivGRAD_DIV), WORK (default benchmarks/energy_law/work/STEP_rREFINEMENT_tauTAU_MAX_tEND,
+# not committed). The runs resume from their checkpoints when the script is run again.
 # --quick: end_states/run.sh --quick (v = 0.75, L₀ = 10, refinement 2, t ≤ 5), its table printed, nothing written here.
 # Then: /usr/bin/python3 benchmarks/energy_law/grid_plot.py   (grid/*.csv → grid.md, grid.png)
 set -eu
@@ -24,6 +25,7 @@ esac
 export REFINEMENT=${REFINEMENT:-3} TAU_MAX=${TAU_MAX:-0.1} END=${END:-40}
 name=${step}_r${REFINEMENT}_tau${TAU_MAX}_t${END}
 [ "$step" = after ] && [ "${ENERGY_LAW:-retry}" != retry ] && name=${name}_$ENERGY_LAW
+[ "$step" = after ] && [ -n "${GRAD_DIV:-}" ] && name=${name}_graddiv$GRAD_DIV
 export WORK=${WORK:-$PWD/benchmarks/energy_law/work/$name}
 if [ "${2:-}" = "--quick" ]; then
   bash benchmarks/end_states/run.sh --quick
