@@ -14,7 +14,9 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "phase3"))
 import budget  # noqa: E402
+import statistics_columns  # noqa: E402
 
 import matplotlib  # noqa: E402
 
@@ -27,13 +29,7 @@ WINDOWS = {"rest": ("v0.65_L0_oblate", 5.5, 8.0), "spin": ("v0.95_L40_oblate", 4
 
 def statistics(run):
     """Columns of RUN/statistics by name."""
-    names, rows = [], []
-    for line in open(f"{run}/statistics"):
-        if line.startswith("#"):
-            names.append(line.split(":", 1)[1].strip())
-        elif line.strip():
-            rows.append([float(x) for x in line.split()])
-    return {name: [r[i] for r in rows] for i, name in enumerate(names)}
+    return statistics_columns.read(f"{run}/statistics")
 
 
 def summary(run):
@@ -87,8 +83,8 @@ def accuracy(work, gamma, reference, level=3):
 
 def main():
     work, out_csv, out_png = sys.argv[1:4]
-    gammas = sorted({re.sub(r".*_g", "", os.path.basename(p)) for p in glob.glob(f"{work}/v0.65_L0_oblate_g*")
-                     if os.path.isdir(p)}, key=float)
+    gammas = sorted({m.group(1) for p in glob.glob(f"{work}/v0.65_L0_oblate_g*")
+                     if os.path.isdir(p) and (m := re.fullmatch(r".*_g([0-9.]+)", os.path.basename(p)))}, key=float)
     reference_run = f"{work}/prolate_r4_g0"
     reference = statistics(reference_run) if os.path.exists(f"{reference_run}/summary") else None
     rows = []
