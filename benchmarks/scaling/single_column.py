@@ -1,0 +1,70 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""The split of the single-column benchmark's last pair (single_column/rN_{before,after}.timing) and its paired wall
+ratios (rN_farm_bench.txt) -> single_column.csv and single_column.png.
+    /usr/bin/python3 benchmarks/scaling/single_column.py"""
+import csv
+import os
+import re
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+here = os.path.join(os.path.dirname(os.path.abspath(__file__)), "single_column")
+sections = ["assembly", "factorization", "linear solve"]
+
+
+def timing(path):
+    """Seconds by section and the whole run of one timing file."""
+    seconds = {}
+    with open(path) as f:
+        for line in f:
+            m = re.match(r"# run: ([0-9.]+) s", line)
+            if m:
+                seconds["run"] = float(m.group(1))
+            m = re.match(r'"([^"]+)", (\d+), ([0-9.e+-]+)', line)
+            if m:
+                seconds[m.group(1)] = float(m.group(3))
+    return seconds
+
+
+def paired_wall_ratio(path):
+    """min, median, max of farm-bench's A/B wall ratio."""
+    with open(path) as f:
+        for line in f:
+            if line.startswith("A/B wall"):
+                return [float(x) for x in line.split()[2:5]]
+    raise SystemExit(f"{path}: no 'A/B wall' line")
+
+
+rows = []
+for refinement in (4, 5):
+    before = timing(os.path.join(here, f"r{refinement}_before.timing"))
+    after = timing(os.path.join(here, f"r{refinement}_after.timing"))
+    ratio = paired_wall_ratio(os.path.join(here, f"r{refinement}_farm_bench.txt"))
+    row = {"refinement": refinement, "paired wall ratio min": ratio[0], "paired wall ratio median": ratio[1],
+           "paired wall ratio max": ratio[2]}
+    for s in sections + ["run"]:
+        row[f"{s} before [s]"] = before[s]
+        row[f"{s} after [s]"] = after[s]
+    rows.append(row)
+
+with open(os.path.join(os.path.dirname(here), "single_column.csv"), "w", newline="") as f:
+    writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+    writer.writeheader()
+    writer.writerows(rows)
+
+fig, axes = plt.subplots(1, 2, figsize=(9, 3.6))
+for ax, row in zip(axes, rows):
+    x = range(len(sections))
+    ax.bar([i - 0.2 for i in x], [row[f"{s} before [s]"] for s in sections], 0.4, label="before (48ee798)")
+    ax.bar([i + 0.2 for i in x], [row[f"{s} after [s]"] for s in sections], 0.4, label="single-column products")
+    ax.set_xticks(list(x))
+    ax.set_xticklabels(sections)
+    ax.set_ylabel("wall time of the section [s]")
+    ax.set_title(f"refinement {row['refinement']}: paired run ratio {row['paired wall ratio median']:.3f} (median)")
+    ax.legend(fontsize=8)
+fig.suptitle("prm/prolate.prm windows, 2 ranks, alone: the last pair's split", fontsize=10)
+fig.tight_layout()
+fig.savefig(os.path.join(os.path.dirname(here), "single_column.png"), dpi=120)
