@@ -39,7 +39,7 @@ def paired_wall_ratio(path):
 
 
 rows = []
-for refinement in (4, 5):
+for refinement in (4, 5, 6):
     before = timing(os.path.join(here, f"r{refinement}_before.timing"))
     after = timing(os.path.join(here, f"r{refinement}_after.timing"))
     ratio = paired_wall_ratio(os.path.join(here, f"r{refinement}_farm_bench.txt"))
@@ -55,7 +55,7 @@ with open(os.path.join(os.path.dirname(here), "single_column.csv"), "w", newline
     writer.writeheader()
     writer.writerows(rows)
 
-fig, axes = plt.subplots(1, 2, figsize=(9, 3.6))
+fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
 for ax, row in zip(axes, rows):
     x = range(len(sections))
     ax.bar([i - 0.2 for i in x], [row[f"{s} before [s]"] for s in sections], 0.4, label="before (48ee798)")
@@ -63,7 +63,7 @@ for ax, row in zip(axes, rows):
     ax.set_xticks(list(x))
     ax.set_xticklabels(sections)
     ax.set_ylabel("wall time of the section [s]")
-    ax.set_title(f"refinement {row['refinement']}: paired run ratio {row['paired wall ratio median']:.3f} (median)")
+    ax.set_title(f"refinement {row['refinement']}: paired run ratio {row['paired wall ratio median']:.3f}", fontsize=10)
     ax.legend(fontsize=8)
 fig.suptitle("prm/prolate.prm windows, 2 ranks, alone: the last pair's split", fontsize=10)
 fig.tight_layout()

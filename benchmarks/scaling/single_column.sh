@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 # benchmarks/scaling/single_column.sh: the program's single-column products (source/linear_algebra/
 # single_column_products.cc) against a build without them, paired (farm-bench: A B A B …), with the README's command
-# (2 ranks): prm/prolate.prm to t = 0.5 at refinement 4 (3 pairs) and to t = 0.2 at refinement 5 (2 pairs).
-#   BEFORE_EXE=… benchmarks/scaling/single_column.sh      # from the repository root, after building; about 25 minutes
+# (2 ranks): prm/prolate.prm to t = 0.5 at refinement 4 (3 pairs), to t = 0.2 at refinement 5 (2 pairs) and to t = 0.1
+# at refinement 6 (2 pairs, no warm-up run; about 4 GB per rank).
+#   BEFORE_EXE=… benchmarks/scaling/single_column.sh      # from the repository root, after building; about 50 minutes
 # BEFORE_EXE: a fluid_surface built from commit 48ee798 (the same numerics without the file). Alone on the machine.
 # Writes benchmarks/scaling/single_column/rN_farm_bench.txt and rN_{after,before}.timing (the last pair's split);
 # then /usr/bin/python3 benchmarks/scaling/single_column.py draws single_column.csv and single_column.png.
@@ -13,7 +14,7 @@ before=${BEFORE_EXE:?"BEFORE_EXE: a fluid_surface built from commit 48ee798"}
 work=${WORK:-$(mktemp -d)}
 out=benchmarks/scaling/single_column
 mkdir -p "$out"
-for case in "4 0.5 3" "5 0.2 2"; do
+for case in "4 0.5 3 1" "5 0.2 2 1" "6 0.1 2 0"; do
   set -- $case
   for side in a b; do
     cat > "$work/r$1$side.prm" <<PRM
@@ -31,7 +32,7 @@ subsection output
 end
 PRM
   done
-  farm-bench -n "$3" --warmup 1 --timeout 3000 \
+  farm-bench -n "$3" --warmup "$4" --timeout 3000 \
     --vs "mpirun --allow-run-as-root -np 2 $before $work/r$1b.prm" -- \
     mpirun --allow-run-as-root -np 2 ./build/fluid_surface "$work/r$1a.prm" |
     sed "s#$work/#WORK/#g; s#$before#BEFORE_EXE#g" > "$out/r$1_farm_bench.txt"
