@@ -1,17 +1,23 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""The split of the single-column benchmark's last pair (single_column/rN_{before,after}.timing) and its paired wall
-ratios (rN_farm_bench.txt) -> single_column.csv and single_column.png.
-    /usr/bin/python3 benchmarks/scaling/single_column.py"""
+"""The split of a paired benchmark's last pair (NAME/rN_{before,after}.timing) and its paired wall ratios
+(rN_farm_bench.txt) -> NAME.csv and NAME.png, for the refinements measured.
+    /usr/bin/python3 benchmarks/scaling/paired.py NAME      # single_column or in_place (paired.sh)"""
 import csv
 import os
 import re
+import sys
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-here = os.path.join(os.path.dirname(os.path.abspath(__file__)), "single_column")
+labels = {"single_column": ("before (48ee798)", "single-column products"),
+          "in_place": ("before (37fdd10)", "in-place insertion")}
+name = sys.argv[1] if len(sys.argv) > 1 else ""
+if name not in labels:
+    raise SystemExit(f"usage: paired.py NAME, NAME one of {', '.join(labels)}")
+here = os.path.join(os.path.dirname(os.path.abspath(__file__)), name)
 sections = ["assembly", "factorization", "linear solve"]
 
 
@@ -40,6 +46,8 @@ def paired_wall_ratio(path):
 
 rows = []
 for refinement in (4, 5, 6):
+    if not os.path.exists(os.path.join(here, f"r{refinement}_farm_bench.txt")):
+        continue
     before = timing(os.path.join(here, f"r{refinement}_before.timing"))
     after = timing(os.path.join(here, f"r{refinement}_after.timing"))
     ratio = paired_wall_ratio(os.path.join(here, f"r{refinement}_farm_bench.txt"))
@@ -50,16 +58,17 @@ for refinement in (4, 5, 6):
         row[f"{s} after [s]"] = after[s]
     rows.append(row)
 
-with open(os.path.join(os.path.dirname(here), "single_column.csv"), "w", newline="") as f:
+with open(os.path.join(os.path.dirname(here), f"{name}.csv"), "w", newline="") as f:
     writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
     writer.writeheader()
     writer.writerows(rows)
 
-fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
+fig, axes = plt.subplots(1, len(rows), figsize=(4.4 * len(rows), 3.6), squeeze=False)
+axes = axes[0]
 for ax, row in zip(axes, rows):
     x = range(len(sections))
-    ax.bar([i - 0.2 for i in x], [row[f"{s} before [s]"] for s in sections], 0.4, label="before (48ee798)")
-    ax.bar([i + 0.2 for i in x], [row[f"{s} after [s]"] for s in sections], 0.4, label="single-column products")
+    ax.bar([i - 0.2 for i in x], [row[f"{s} before [s]"] for s in sections], 0.4, label=labels[name][0])
+    ax.bar([i + 0.2 for i in x], [row[f"{s} after [s]"] for s in sections], 0.4, label=labels[name][1])
     ax.set_xticks(list(x))
     ax.set_xticklabels(sections)
     ax.set_ylabel("wall time of the section [s]")
@@ -67,4 +76,4 @@ for ax, row in zip(axes, rows):
     ax.legend(fontsize=8)
 fig.suptitle("prm/prolate.prm windows, 2 ranks, alone: the last pair's split", fontsize=10)
 fig.tight_layout()
-fig.savefig(os.path.join(os.path.dirname(here), "single_column.png"), dpi=120)
+fig.savefig(os.path.join(os.path.dirname(here), f"{name}.png"), dpi=120)
