@@ -5,7 +5,8 @@
 # t = 0.1 at refinement 6 (2 pairs, no warm-up run; about 4 GB per rank).
 #   BEFORE_EXE=… benchmarks/scaling/paired.sh NAME     # from the repository root, after building; about 50 minutes
 # NAME: the change measured, the folder benchmarks/scaling/NAME: single_column (the single-column products,
-# BEFORE_EXE a build of 48ee798), in_place (the in-place insertion of StepSystem, BEFORE_EXE a build of 37fdd10).
+# BEFORE_EXE a build of 48ee798), in_place (the in-place insertion of commit f1b1b2a, not kept: ./build a build of
+# f1b1b2a, BEFORE_EXE a build of 37fdd10).
 # CASES: the windows, "REFINEMENT END_TIME PAIRS WARMUP ..." (default "4 0.5 3 1 5 0.2 2 1 6 0.1 2 0"). Alone on the
 # machine. Writes benchmarks/scaling/NAME/rN_farm_bench.txt and rN_{after,before}.timing (the last pair's split);
 # then /usr/bin/python3 benchmarks/scaling/paired.py NAME draws NAME.csv and NAME.png.

@@ -441,7 +441,6 @@ namespace FluidSurface
                       LocalSystem                                          &local) {
       local.reinit(n_dofs, rigid);
       cell->get_dof_indices(local.indices);
-      local.cell_index = cell->active_cell_index();
       context.data   = &data;
       context.layout = &system.layout();
       context.local  = &local;

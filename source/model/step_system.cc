@@ -9,10 +9,6 @@
 #include <fluid_surface/model/rigid_motion.h>
 #include <fluid_surface/model/step_system.h>
 
-#include <Epetra_CrsMatrix.h>
-#include <Epetra_FEVector.h>
-
-#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -62,7 +58,6 @@ namespace FluidSurface
       row.reinit(owned, surface.get_communicator());
     list_nodes();
     pair_position_dofs();
-    list_matrix_places();
   }
 
   VectorType
@@ -98,11 +93,6 @@ namespace FluidSurface
       column = 0;
     for (auto &row : rigid_motion_rows)
       row = 0;
-    int *columns  = nullptr;
-    matrix_values = nullptr;
-    if (!cell_places.empty() &&
-        system_matrix.trilinos_matrix().ExtractCrsDataPointers(row_starts, columns, matrix_values) != 0)
-      matrix_values = nullptr;
   }
 
   bool
@@ -145,12 +135,6 @@ namespace FluidSurface
                                std::to_string(element->system_to_component_index(i).first) + " and " +
                                std::to_string(element->system_to_component_index(j).first) +
                                ", which StepSystem::couples() leaves out of the sparsity pattern."));
-    if (matrix_values != nullptr && local.cell_index < cell_places.size() &&
-        cell_places[local.cell_index] != numbers::invalid_unsigned_int)
-      {
-        add_in_place(local, cell_places[local.cell_index], rigid);
-        return;
-      }
     hanging_nodes.distribute_local_to_global(local.matrix, local.rhs, local.indices, system_matrix, system_rhs);
     hanging_nodes.distribute_local_to_global(local.volume_column, local.indices, volume);
     if (rigid)
@@ -159,124 +143,6 @@ namespace FluidSurface
           hanging_nodes.distribute_local_to_global(local.rigid_columns[k], local.indices, rigid_motion_columns[k]);
           hanging_nodes.distribute_local_to_global(local.rigid_rows[k], local.indices, rigid_motion_rows[k]);
         }
-  }
-
-  void
-  StepSystem::list_matrix_places()
-  {
-    const unsigned int n_local = element->n_dofs_per_cell();
-    coupled_entries.clear();
-    coupled_begin.assign(n_local + 1, 0);
-    for (unsigned int i = 0; i < n_local; ++i)
-      {
-        coupled_begin[i] = coupled_entries.size();
-        for (unsigned int j = 0; j < n_local; ++j)
-          if (local_coupling[i][j])
-            coupled_entries.emplace_back(i, j);
-      }
-    coupled_begin[n_local] = coupled_entries.size();
-    cell_places.clear();
-    row_ids.clear();
-    entry_positions.clear();
-
-    const Epetra_CrsMatrix &matrix  = system_matrix.trilinos_matrix();
-    int                    *starts  = nullptr, *columns = nullptr;
-    double                 *values  = nullptr;
-    if (!matrix.StorageOptimized() || matrix.ExtractCrsDataPointers(starts, columns, values) != 0)
-      return;
-    cell_places.assign(surface.triangulation().n_active_cells(), numbers::invalid_unsigned_int);
-    std::vector<types::global_dof_index> indices(n_local);
-    std::vector<int>                     rows(n_local);
-    unsigned int                         n_places = 0;
-    for (const auto &cell : dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(indices);
-          if (std::any_of(indices.begin(), indices.end(), [&](const auto i) { return hanging_nodes.is_constrained(i); }))
-            continue;
-          for (unsigned int i = 0; i < n_local; ++i)
-            rows[i] = matrix.RowMap().LID(static_cast<TrilinosWrappers::types::int_type>(indices[i]));
-          for (const auto &[i, j] : coupled_entries)
-            {
-              if (rows[i] < 0)
-                {
-                  entry_positions.push_back(0);
-                  continue;
-                }
-              const int  column = matrix.ColMap().LID(static_cast<TrilinosWrappers::types::int_type>(indices[j]));
-              const int *first = columns + starts[rows[i]], *last = columns + starts[rows[i] + 1];
-              const int *place = std::lower_bound(first, last, column);
-              // Unsorted rows or an entry outside the pattern: the cells keep AffineConstraints' insertion.
-              if (column < 0 || place == last || *place != column || place - first > UINT16_MAX)
-                {
-                  cell_places.clear();
-                  row_ids.clear();
-                  entry_positions.clear();
-                  return;
-                }
-              entry_positions.push_back(static_cast<std::uint16_t>(place - first));
-            }
-          row_ids.insert(row_ids.end(), rows.begin(), rows.end());
-          cell_places[cell->active_cell_index()] = n_places++;
-        }
-  }
-
-  void
-  StepSystem::add_in_place(const LocalSystem &local, const unsigned int place, const bool rigid)
-  {
-    const unsigned int   n_local   = local.indices.size();
-    const int           *rows      = row_ids.data() + std::size_t(place) * n_local;
-    const std::uint16_t *positions = entry_positions.data() + std::size_t(place) * coupled_entries.size();
-    double              *rhs       = system_rhs.trilinos_vector()[0];
-    double              *column    = volume.trilinos_vector()[0];
-    std::array<double *, 6> rigid_column{}, rigid_row{};
-    if (rigid)
-      for (unsigned int k = 0; k < 6; ++k)
-        {
-          rigid_column[k] = rigid_motion_columns[k].trilinos_vector()[0];
-          rigid_row[k]    = rigid_motion_rows[k].trilinos_vector()[0];
-        }
-    std::vector<GlobalIndex> other_columns;
-    std::vector<double>      other_values;
-    for (unsigned int i = 0; i < n_local; ++i)
-      {
-        const int row = rows[i];
-        if (row >= 0)
-          {
-            double *row_values = matrix_values + row_starts[row];
-            for (unsigned int e = coupled_begin[i]; e < coupled_begin[i + 1]; ++e)
-              row_values[positions[e]] += local.matrix(i, coupled_entries[e].second);
-            rhs[row] += local.rhs(i);
-            column[row] += local.volume_column(i);
-            if (rigid)
-              for (unsigned int k = 0; k < 6; ++k)
-                {
-                  rigid_column[k][row] += local.rigid_columns[k](i);
-                  rigid_row[k][row] += local.rigid_rows[k](i);
-                }
-            continue;
-          }
-        const GlobalIndex global_row = local.indices[i];
-        other_columns.clear();
-        other_values.clear();
-        for (unsigned int e = coupled_begin[i]; e < coupled_begin[i + 1]; ++e)
-          if (const double value = local.matrix(i, coupled_entries[e].second); value != 0)
-            {
-              other_columns.push_back(local.indices[coupled_entries[e].second]);
-              other_values.push_back(value);
-            }
-        if (!other_columns.empty())
-          system_matrix.add(global_row, other_columns.size(), other_columns.data(), other_values.data(), false, false);
-        const auto add_entry = [&](VectorType &vector, const double value) { vector.add(1, &global_row, &value); };
-        add_entry(system_rhs, local.rhs(i));
-        add_entry(volume, local.volume_column(i));
-        if (rigid)
-          for (unsigned int k = 0; k < 6; ++k)
-            {
-              add_entry(rigid_motion_columns[k], local.rigid_columns[k](i));
-              add_entry(rigid_motion_rows[k], local.rigid_rows[k](i));
-            }
-      }
   }
 
   void

@@ -2,7 +2,6 @@
 #ifndef fluid_surface_model_local_system_h
 #define fluid_surface_model_local_system_h
 
-#include <deal.II/base/numbers.h>
 #include <deal.II/base/types.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -41,8 +40,6 @@ namespace FluidSurface
     std::array<dealii::Vector<double>, 6>        rigid_columns; ///< (r_k, v), r = e_d, e_d × x
     std::array<dealii::Vector<double>, 6>        rigid_rows;    ///< the constraint rows of the momenta
     std::vector<dealii::types::global_dof_index> indices;
-    /// The cell's active_cell_index() (StepSystem's in-place insertion).
-    unsigned int cell_index = dealii::numbers::invalid_unsigned_int;
   };
 } // namespace FluidSurface
 

@@ -12,7 +12,6 @@
 #include <fluid_surface/model/dof_layout.h>
 
 #include <array>
-#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -145,12 +144,6 @@ namespace FluidSurface
      */
     void
     distribute_local_to_global(const LocalSystem &local, const bool rigid);
-    /// Whether distribute_local_to_global() adds the cells without constrained DoFs in place (add_in_place()).
-    bool
-    inserts_in_place() const
-    {
-      return !cell_places.empty();
-    }
 
     /// The flow DoFs of the locally owned nodes of Y.
     const std::vector<Node> &
@@ -208,21 +201,6 @@ namespace FluidSurface
     /// position_pairs and position_geometry_dofs: Y_d and X_d share the nodes of Q_k.
     void
     pair_position_dofs();
-    /**
-     * The places of the locally owned cells' couplings in the matrix's compressed rows (cell_places, row_ids,
-     * entry_positions), for the cells without constrained DoFs; none if the matrix does not store its rows as
-     * one compressed array.
-     */
-    void
-    list_matrix_places();
-    /**
-     * Adds @p local in place: each coupling of an owned row to its stored value, each entry of an owned row to
-     * the vectors' local entries, the rows of other ranks through the matrix's and vectors' add(). The same
-     * sums in the same order as AffineConstraints::distribute_local_to_global() without constraints, without
-     * Epetra's lookup of each global index. @p place: the cell's index in cell_places.
-     */
-    void
-    add_in_place(const LocalSystem &local, const unsigned int place, const bool rigid);
 
     SurfaceGeometry                        &surface;
     std::unique_ptr<dealii::FESystem<2, 3>> element;
@@ -246,19 +224,6 @@ namespace FluidSurface
     std::vector<std::pair<GlobalIndex, GlobalIndex>> position_pairs;
     /// The geometry DoFs of the components of each node of position_nodes.
     std::vector<Node> position_geometry_dofs;
-
-    /// The (i, j) of a cell's coupled entries (local_coupling), row by row; row i's from coupled_begin[i].
-    std::vector<std::pair<unsigned int, unsigned int>> coupled_entries;
-    std::vector<unsigned int>                          coupled_begin;
-    /// For each active cell: its index among the cells with places, or invalid_unsigned_int.
-    std::vector<unsigned int> cell_places;
-    /// Per cell with places and local DoF: the local row of an owned DoF, or −1.
-    std::vector<int> row_ids;
-    /// Per cell with places and coupled entry of an owned row: its position among the stored columns of its row.
-    std::vector<std::uint16_t> entry_positions;
-    /// The matrix's compressed rows (set in zero()): the start of each local row and the values.
-    int    *row_starts    = nullptr;
-    double *matrix_values = nullptr;
   };
 } // namespace FluidSurface
 
